@@ -1,0 +1,24 @@
+#pragma once
+#include <expected>
+#include <string>
+
+#include "mysim/scene.h"
+#include "mysim/simulation.h"
+
+namespace springcheck {
+
+// Writes a run into `dir` (created if missing), the same files for every engine:
+//   summary.json      engine, integrator, dt, steps, wall time, energies at start and end,
+//                     blow-up (time, step, check) or null, and "complete"
+//   final_state.csv   particle,x,y,z,vx,vy,vz: the last sampled state
+//   trajectory.npy    float64 (frames, particles, 6): x y z vx vy vz per sampled frame
+//   times.npy         float64 (frames,): the time of each frame, s
+//   energy.csv        t,kinetic,gravity,spring,total per frame (systems with energy)
+//   final.obj         the last cloth frame as a mesh with normals (cloth scenes)
+// Each file is written under a temporary name and renamed; summary.json comes last, so a
+// directory with a summary holds a whole run.
+[[nodiscard]] std::expected<void, std::string> writeRunOutputs(const std::string& dir,
+                                                               const mysim::Scene& scene,
+                                                               const mysim::RunRecord& record);
+
+}  // namespace springcheck

@@ -1,0 +1,14 @@
+#pragma once
+#include <CLI/CLI.hpp>
+
+namespace springcheck {
+
+// Exit codes of the springcheck executable.
+enum ExitCode : int { kOk = 0, kFailure = 1, kBadInput = 2, kBlowUp = 3 };
+
+// Each registers a subcommand whose callback stores its exit code in `exit_code`.
+void addRunCommand(CLI::App& app, int& exit_code);
+void addListCommand(CLI::App& app, int& exit_code);
+void addSuiteCommand(CLI::App& app, int& exit_code);
+
+}  // namespace springcheck

@@ -1,0 +1,38 @@
+#include "compare/engines.h"
+
+namespace springcheck {
+
+const std::vector<std::string>& engineNames() {
+  static const std::vector<std::string> names = {"mysim"};
+  return names;
+}
+
+namespace {
+
+std::expected<mysim::RunRecord, std::string> runMysim(const mysim::Scene& scene) {
+  auto integrator = mysim::makeIntegrator(scene.integrator);
+  if (!integrator) return std::unexpected(scene.source + ": integrator.name: " + integrator.error());
+  std::unique_ptr<mysim::OdeSystem> system = mysim::makeSystem(scene);
+  if ((*integrator)->needsParticles() && !system->particles()) {
+    return std::unexpected(scene.source + ": integrator.name: '" + scene.integrator.name +
+                           "' needs a particle system; the circle is a first-order ODE");
+  }
+  const mysim::State start = mysim::initialState(scene, *system);
+  mysim::RunRecord record = mysim::simulate(
+      *system, **integrator, start, {scene.dt, scene.duration, scene.sample_interval});
+  record.engine = "mysim";
+  record.integrator = scene.integrator.name;
+  return record;
+}
+
+}  // namespace
+
+std::expected<mysim::RunRecord, std::string> runEngine(const mysim::Scene& scene,
+                                                       const std::string& engine) {
+  if (engine == "mysim") return runMysim(scene);
+  std::string valid;
+  for (const std::string& name : engineNames()) valid += (valid.empty() ? "" : ", ") + name;
+  return std::unexpected("unknown engine '" + engine + "'; expected one of " + valid);
+}
+
+}  // namespace springcheck

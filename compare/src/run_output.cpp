@@ -1,0 +1,144 @@
+#include "compare/run_output.h"
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <nlohmann/json.hpp>
+
+#include "compare/npy.h"
+#include "mysim/cloth_mesh.h"
+
+namespace springcheck {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+json energyJson(const mysim::EnergyTerms& e) {
+  return {{"kinetic", e.kinetic}, {"gravity", e.gravity}, {"spring", e.spring}, {"total", e.total()}};
+}
+
+json summaryJson(const mysim::Scene& scene, const mysim::RunRecord& r) {
+  json s = {{"scene", scene.name},
+            {"scene_file", scene.source},
+            {"system", mysim::systemKindName(scene.kind)},
+            {"engine", r.engine},
+            {"integrator", r.integrator},
+            {"dt", r.dt},
+            {"duration", r.duration},
+            {"steps", r.steps},
+            {"time_reached", r.times.empty() ? 0.0 : r.times.back()},
+            {"wall_seconds", r.wall_seconds},
+            {"accepted_steps", r.counts.accepted},
+            {"rejected_steps", r.counts.rejected},
+            {"derivative_evaluations", r.counts.derivative_evaluations},
+            {"linear_iterations", r.counts.linear_iterations},
+            {"solver_failures", r.counts.solver_failures},
+            {"particles", r.frames.empty() ? 0 : r.frames.front().rows()},
+            {"frames", r.frames.size()},
+            {"complete", !r.blowup.has_value()}};
+  s["energy_start"] = r.energies.empty() ? json() : energyJson(r.energies.front());
+  s["energy_end"] = r.energies.empty() ? json() : energyJson(r.energies.back());
+  if (r.blowup) {
+    s["blowup"] = {{"time", r.blowup->time},
+                   {"step", r.blowup->step},
+                   {"check", r.blowup->check},
+                   {"detail", r.blowup->detail}};
+  } else {
+    s["blowup"] = nullptr;
+  }
+  return s;
+}
+
+// Writes through `write` into dir/name.tmp, then renames over dir/name.
+std::expected<void, std::string> writeFile(const fs::path& dir, const std::string& name,
+                                           const std::function<bool(const fs::path&)>& write) {
+  const fs::path final_path = dir / name, tmp = dir / (name + ".tmp");
+  if (!write(tmp)) return std::unexpected("cannot write " + tmp.string());
+  std::error_code ec;
+  fs::rename(tmp, final_path, ec);
+  if (ec) return std::unexpected("cannot rename " + tmp.string() + ": " + ec.message());
+  return {};
+}
+
+bool writeText(const fs::path& path, const std::function<void(std::ostream&)>& body) {
+  std::ofstream out(path);
+  body(out);
+  return static_cast<bool>(out);
+}
+
+}  // namespace
+
+std::expected<void, std::string> writeRunOutputs(const std::string& dir_name,
+                                                 const mysim::Scene& scene,
+                                                 const mysim::RunRecord& r) {
+  const fs::path dir(dir_name);
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) return std::unexpected("cannot create " + dir.string() + ": " + ec.message());
+  if (r.frames.empty()) return std::unexpected("run recorded no frame");
+  // A summary from an earlier run must not stand beside this run's half-written files.
+  fs::remove(dir / "summary.json", ec);
+
+  const mysim::ParticleRows& last = r.frames.back();
+  auto done = writeFile(dir, "final_state.csv", [&](const fs::path& p) {
+    return writeText(p, [&](std::ostream& out) {
+      out.precision(17);
+      out << "particle,x,y,z,vx,vy,vz\n";
+      for (int i = 0; i < last.rows(); ++i) {
+        out << i;
+        for (int k = 0; k < 6; ++k) out << ',' << last(i, k);
+        out << '\n';
+      }
+    });
+  });
+  if (!done) return done;
+
+  const long frames = static_cast<long>(r.frames.size()), particles = last.rows();
+  std::vector<double> flat;
+  flat.reserve(frames * particles * 6);
+  for (const mysim::ParticleRows& f : r.frames) {
+    for (int i = 0; i < particles; ++i) {
+      for (int k = 0; k < 6; ++k) flat.push_back(f(i, k));
+    }
+  }
+  done = writeFile(dir, "trajectory.npy", [&](const fs::path& p) {
+    return writeNpy(p.string(), {frames, particles, 6}, flat);
+  });
+  if (!done) return done;
+  done = writeFile(dir, "times.npy",
+                   [&](const fs::path& p) { return writeNpy(p.string(), {frames}, r.times); });
+  if (!done) return done;
+
+  if (!r.energies.empty()) {
+    done = writeFile(dir, "energy.csv", [&](const fs::path& p) {
+      return writeText(p, [&](std::ostream& out) {
+        out.precision(17);
+        out << "t,kinetic,gravity,spring,total\n";
+        for (std::size_t f = 0; f < r.energies.size(); ++f) {
+          const mysim::EnergyTerms& e = r.energies[f];
+          out << r.times[f] << ',' << e.kinetic << ',' << e.gravity << ',' << e.spring << ','
+              << e.total() << '\n';
+        }
+      });
+    });
+    if (!done) return done;
+  }
+
+  if (scene.kind == mysim::SystemKind::Cloth) {
+    mysim::Vector x(3 * particles);
+    for (int i = 0; i < particles; ++i) x.segment<3>(3 * i) = last.block<1, 3>(i, 0).transpose();
+    done = writeFile(dir, "final.obj", [&](const fs::path& p) {
+      return writeText(p, [&](std::ostream& out) {
+        mysim::writeObj(out, {scene.cloth.rows, scene.cloth.cols}, x);
+      });
+    });
+    if (!done) return done;
+  }
+
+  return writeFile(dir, "summary.json", [&](const fs::path& p) {
+    return writeText(p, [&](std::ostream& out) { out << summaryJson(scene, r).dump(2) << '\n'; });
+  });
+}
+
+}  // namespace springcheck

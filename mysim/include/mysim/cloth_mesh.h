@@ -1,0 +1,22 @@
+#pragma once
+#include <ostream>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "mysim/model.h"
+
+namespace mysim {
+
+// Triangles of a grid cloth: two per cell, as (a, b, c) particle indices, counter-clockwise seen
+// from the side the normals point to.
+std::vector<Eigen::Vector3i> gridTriangles(const GridShape& grid);
+
+// Per-vertex normals: the normalised sum of the normalised normals of the faces around each
+// vertex (the seed's smooth shading). Every face counts equally, whatever its area.
+std::vector<Vec3> vertexNormals(const GridShape& grid, const Vector& x);
+
+// Writes the cloth as a Wavefront OBJ mesh: v, vn and f lines (1-based, v//vn).
+void writeObj(std::ostream& out, const GridShape& grid, const Vector& x);
+
+}  // namespace mysim

@@ -1,0 +1,21 @@
+#pragma once
+#include "mysim/types.h"
+
+namespace mysim {
+
+struct Model;
+
+// Mechanical energy split by term, in joules. Damping, drag, wind and driven pins change the total
+// on purpose, so the terms are kept apart for the reports to tell them.
+struct EnergyTerms {
+  double kinetic = 0.0;  // sum 1/2 m |v|^2 over free particles
+  double gravity = 0.0;  // sum -m g.x over free particles (zero at the origin)
+  double spring = 0.0;   // sum 1/2 k (|xj - xi| - rest)^2 over springs
+  double total() const { return kinetic + gravity + spring; }
+};
+
+// Pinned particles are not dynamic (Bullet gives them infinite mass), so they carry no kinetic or
+// gravitational energy here; every engine's energy is computed by this one function.
+EnergyTerms mechanicalEnergy(const Model& model, const Vector& x, const Vector& v);
+
+}  // namespace mysim

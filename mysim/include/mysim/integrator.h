@@ -1,0 +1,64 @@
+#pragma once
+#include <expected>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "mysim/ode_system.h"
+
+namespace mysim {
+
+// What one call to step() did, summed over a run.
+struct StepCounts {
+  long accepted = 0;           // accepted (sub)steps
+  long rejected = 0;           // rejected trial steps (adaptive only)
+  long derivative_evaluations = 0;
+  long linear_iterations = 0;  // CG iterations (backward Euler only)
+  long solver_failures = 0;    // linear solves that did not reach their tolerance
+
+  StepCounts& operator+=(const StepCounts& o);
+};
+
+struct IntegratorSettings {
+  std::string name = "rk4";
+  double abs_tolerance = 1e-6;       // adaptive: per-component absolute error bound
+  double rel_tolerance = 1e-6;       // adaptive: relative error bound
+  double cg_tolerance = 1e-8;        // backward Euler: CG relative residual
+  int cg_max_iterations = 1000;      // backward Euler
+};
+
+// Advances a state by h. Owns its scratch buffers (allocated on first use, reused after), so one
+// instance serves one run. A step ends with system.afterStep() applied.
+class Integrator {
+ public:
+  virtual ~Integrator() = default;
+  virtual StepCounts step(OdeSystem& system, State& state, double h) = 0;
+  // Second-order methods need a ParticleSystem.
+  virtual bool needsParticles() const { return false; }
+};
+
+struct IntegratorInfo {
+  std::string name;
+  std::string alias;  // the seed's one-letter name, if any
+  std::string description;
+  bool needs_particles;
+};
+const std::vector<IntegratorInfo>& integratorCatalog();
+
+// Canonical name for a name or alias, or an error listing the valid ones.
+std::expected<std::string, std::string> canonicalIntegratorName(std::string_view name);
+
+std::expected<std::unique_ptr<Integrator>, std::string> makeIntegrator(
+    const IntegratorSettings& settings);
+
+// Per-method factories (one file each).
+std::unique_ptr<Integrator> makeForwardEuler();
+std::unique_ptr<Integrator> makeTrapezoidal();
+std::unique_ptr<Integrator> makeRk4();
+std::unique_ptr<Integrator> makeSymplecticEuler();
+std::unique_ptr<Integrator> makeVelocityVerlet();
+std::unique_ptr<Integrator> makeBackwardEuler(double cg_tolerance, int cg_max_iterations);
+std::unique_ptr<Integrator> makeDormandPrince(double abs_tolerance, double rel_tolerance);
+
+}  // namespace mysim

@@ -1,0 +1,17 @@
+#pragma once
+#include <expected>
+#include <string>
+
+#include "mysim/scene.h"
+
+namespace mysim {
+
+// Reads and validates a scene file. On failure the message names the file, the field and what
+// was expected, e.g. "scenes/a.json: system.rows: expected an integer >= 2, got -3".
+[[nodiscard]] std::expected<Scene, std::string> loadScene(const std::string& path);
+
+// The same from text already read; `source` names it in messages.
+[[nodiscard]] std::expected<Scene, std::string> parseScene(const std::string& text,
+                                                           const std::string& source);
+
+}  // namespace mysim

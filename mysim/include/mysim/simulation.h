@@ -1,0 +1,45 @@
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "mysim/blowup.h"
+#include "mysim/energy.h"
+#include "mysim/integrator.h"
+
+namespace mysim {
+
+using ParticleRows = Eigen::Matrix<double, Eigen::Dynamic, 6>;  // (N x 6): x y z vx vy vz
+
+// What a run produced, the same for every engine (mysim or a Bullet reference).
+struct RunRecord {
+  std::string engine;
+  std::string integrator;
+  double dt = 0.0;
+  double duration = 0.0;          // requested
+  long steps = 0;                 // scene steps taken
+  StepCounts counts;
+  double wall_seconds = 0.0;      // stepping alone: no set-up, sampling or output
+  std::vector<double> times;      // (F) s
+  std::vector<ParticleRows> frames;  // (F) sampled states, finite only
+  std::vector<EnergyTerms> energies; // (F) where the system has energy
+  std::optional<BlowUp> blowup;
+};
+
+struct RunSettings {
+  double dt = 0.01;
+  double duration = 1.0;
+  double sample_interval = 0.0;  // 0: about 200 frames
+};
+
+// Frames are taken every this many steps.
+long sampleStride(const RunSettings& settings);
+
+// Steps the system from `state` for the duration, checking health after every step; stops at the
+// first unhealthy state and records it (the frames hold the states before it, never NaNs).
+RunRecord simulate(OdeSystem& system, Integrator& integrator, State state,
+                   const RunSettings& settings);
+
+}  // namespace mysim

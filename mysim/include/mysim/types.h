@@ -1,0 +1,16 @@
+#pragma once
+// Shared numeric types. Units are SI throughout (m, kg, s, N); see docs/scenes.md.
+#include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products
+
+namespace mysim {
+
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+using Vector = Eigen::VectorXd;
+
+// A particle's 3-vector inside a flat 3N array, without copying.
+inline auto at3(Vector& v, int particle) { return v.segment<3>(3 * particle); }
+inline auto at3(const Vector& v, int particle) { return v.segment<3>(3 * particle); }
+
+}  // namespace mysim

@@ -1,0 +1,32 @@
+#include "mysim/circle_system.h"
+
+#include <cmath>
+
+namespace mysim {
+
+void CircleSystem::derivative(double /*t*/, const Vector& y, Vector& dydt) {
+  dydt.resize(2);
+  dydt[0] = -y[1];
+  dydt[1] = y[0];
+}
+
+std::optional<OdeSystem::Unhealthy> CircleSystem::checkHealth(const State& state) const {
+  if (!state.y.allFinite()) return Unhealthy{"non-finite", "state has a NaN or infinity"};
+  // Forward Euler grows the radius by sqrt(1 + h^2) a step; a thousandfold growth is runaway.
+  const double limit = 1e3 * start_.norm();
+  if (state.y.norm() > limit) {
+    return Unhealthy{"energy", "radius " + std::to_string(state.y.norm()) + " > " +
+                                   std::to_string(limit)};
+  }
+  return std::nullopt;
+}
+
+Eigen::Matrix<double, Eigen::Dynamic, 6> CircleSystem::particleRows(const State& state) {
+  Eigen::Matrix<double, Eigen::Dynamic, 6> rows(1, 6);
+  rows << state.y[0], state.y[1], 0.0, -state.y[1], state.y[0], 0.0;
+  return rows;
+}
+
+State CircleSystem::initialState() const { return State{0.0, start_}; }
+
+}  // namespace mysim

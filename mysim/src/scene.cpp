@@ -1,0 +1,65 @@
+#include "mysim/scene.h"
+
+#include "mysim/circle_system.h"
+#include "mysim/particle_system.h"
+
+namespace mysim {
+
+const char* systemKindName(SystemKind kind) {
+  switch (kind) {
+    case SystemKind::Circle: return "circle";
+    case SystemKind::Chain: return "chain";
+    case SystemKind::Cloth: return "cloth";
+    case SystemKind::Particles: return "particles";
+  }
+  return "?";
+}
+
+Model buildModel(const Scene& scene) {
+  Model model;
+  switch (scene.kind) {
+    case SystemKind::Circle: break;
+    case SystemKind::Chain: buildChain(scene.chain, model); break;
+    case SystemKind::Cloth: buildCloth(scene.cloth, model); break;
+    case SystemKind::Particles: {
+      const int n = static_cast<int>(scene.particles.size());
+      model.mass.resize(n);
+      model.pinned.assign(n, 0);
+      model.start_position.resize(3 * n);
+      model.start_velocity.resize(3 * n);
+      for (int p = 0; p < n; ++p) {
+        const ExplicitParticle& particle = scene.particles[p];
+        model.mass[p] = particle.mass;
+        model.pinned[p] = particle.pinned;
+        at3(model.start_position, p) = particle.position;
+        at3(model.start_velocity, p) = particle.velocity;
+      }
+      model.springs = scene.springs;
+      break;
+    }
+  }
+  if (scene.kind == SystemKind::Chain || scene.kind == SystemKind::Cloth) {
+    for (int p : scene.pins) model.pinned[p] = 1;
+    for (int p = 0; p < model.particleCount(); ++p) {
+      if (!model.pinned[p]) at3(model.start_velocity, p) = scene.start_velocity;
+    }
+  }
+  model.gravity = scene.gravity;
+  model.drag = scene.drag;
+  model.wind = scene.wind;
+  model.pin_motion = scene.pin_motion;
+  model.sphere = scene.sphere;
+  return model;
+}
+
+std::unique_ptr<OdeSystem> makeSystem(const Scene& scene) {
+  if (scene.kind == SystemKind::Circle) return std::make_unique<CircleSystem>(scene.circle_start);
+  return std::make_unique<ParticleSystem>(buildModel(scene), scene.limits);
+}
+
+State initialState(const Scene& scene, OdeSystem& system) {
+  if (scene.kind == SystemKind::Circle) return static_cast<CircleSystem&>(system).initialState();
+  return system.particles()->initialState();
+}
+
+}  // namespace mysim

@@ -1,0 +1,56 @@
+#include "mysim/simulation.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace mysim {
+namespace {
+
+long stepCount(const RunSettings& settings) {
+  return std::max(1L, std::lround(settings.duration / settings.dt));
+}
+
+void recordFrame(OdeSystem& system, const State& state, RunRecord& record) {
+  record.times.push_back(state.t);
+  record.frames.push_back(system.particleRows(state));
+  if (auto e = system.energy(state)) record.energies.push_back(*e);
+}
+
+}  // namespace
+
+long sampleStride(const RunSettings& settings) {
+  if (settings.sample_interval > 0.0) {
+    return std::max(1L, std::lround(settings.sample_interval / settings.dt));
+  }
+  return std::max(1L, stepCount(settings) / 200);
+}
+
+RunRecord simulate(OdeSystem& system, Integrator& integrator, State state,
+                   const RunSettings& settings) {
+  using Clock = std::chrono::steady_clock;
+  RunRecord record;
+  record.dt = settings.dt;
+  record.duration = settings.duration;
+  const long steps = stepCount(settings);
+  const long stride = sampleStride(settings);
+  recordFrame(system, state, record);
+
+  Clock::duration stepping{};
+  for (long step = 1; step <= steps; ++step) {
+    const auto start = Clock::now();
+    record.counts += integrator.step(system, state, settings.dt);
+    stepping += Clock::now() - start;
+    record.steps = step;
+    // One health check a step: the first bad state is reported, never written.
+    if (auto bad = system.checkHealth(state)) {
+      record.blowup = BlowUp{state.t, step, bad->check, bad->detail};
+      break;
+    }
+    if (step % stride == 0 || step == steps) recordFrame(system, state, record);
+  }
+  record.wall_seconds = std::chrono::duration<double>(stepping).count();
+  return record;
+}
+
+}  // namespace mysim

@@ -1,0 +1,52 @@
+#include "mysim/spring.h"
+
+#include <algorithm>
+
+namespace mysim {
+
+const char* familyName(SpringFamily family) {
+  switch (family) {
+    case SpringFamily::Structural: return "structural";
+    case SpringFamily::Shear: return "shear";
+    case SpringFamily::Flex: return "flex";
+    case SpringFamily::Chain: return "chain";
+    case SpringFamily::Custom: return "custom";
+  }
+  return "custom";
+}
+
+Vec3 springForce(const Vec3& xi, const Vec3& xj, const Vec3& vi, const Vec3& vj, double rest,
+                 double k, double c) {
+  const Vec3 d = xj - xi;
+  const double l = d.norm();
+  const Vec3 u = d / l;
+  return (k * (l - rest) + c * u.dot(vj - vi)) * u;
+}
+
+Mat3 springPositionJacobian(const Vec3& xi, const Vec3& xj, const Vec3& vi, const Vec3& vj,
+                            double rest, double k, double c) {
+  const Vec3 d = xj - xi;
+  const double l = d.norm();
+  const Vec3 u = d / l;
+  const Mat3 uu = u * u.transpose();
+  const Mat3 tangent = Mat3::Identity() - uu;  // du/dd = tangent / l
+  const Vec3 w = vj - vi;
+  const Mat3 elastic = k * ((1.0 - rest / l) * tangent + uu);
+  const Mat3 damping = (c / l) * (u.dot(w) * Mat3::Identity() + u * w.transpose()) * tangent;
+  return elastic + damping;
+}
+
+Mat3 springElasticJacobianDefinite(const Vec3& xi, const Vec3& xj, double rest, double k) {
+  const Vec3 d = xj - xi;
+  const double l = d.norm();
+  const Vec3 u = d / l;
+  const Mat3 uu = u * u.transpose();
+  return k * (std::max(0.0, 1.0 - rest / l) * (Mat3::Identity() - uu) + uu);
+}
+
+Mat3 springVelocityJacobian(const Vec3& xi, const Vec3& xj, double c) {
+  const Vec3 u = (xj - xi).normalized();
+  return c * u * u.transpose();
+}
+
+}  // namespace mysim

@@ -24,7 +24,7 @@ class SeedScene : public ::testing::TestWithParam<SeedCase> {};
 
 TEST_P(SeedScene, RunsWithoutBlowUpAndWithoutEnergyGain) {
   const SeedCase& c = GetParam();
-  auto scene = loadScene(std::string(SPRINGCHECK_SOURCE_DIR "/scenes/") + c.scene + ".json");
+  auto scene = loadScene(std::string(SPRINGCHECK_SOURCE_DIR "/scenes/seed/") + c.scene + ".json");
   ASSERT_TRUE(scene) << scene.error();
   scene->integrator.name = c.integrator;
   scene->dt = c.dt;

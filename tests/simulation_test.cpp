@@ -11,7 +11,7 @@ namespace mysim {
 namespace {
 
 Scene sceneFile(const std::string& name) {
-  auto scene = loadScene(std::string(SPRINGCHECK_SOURCE_DIR "/scenes/") + name);
+  auto scene = loadScene(std::string(SPRINGCHECK_SOURCE_DIR "/scenes/seed/") + name);
   EXPECT_TRUE(scene) << scene.error();
   return *scene;
 }

@@ -30,7 +30,7 @@ TEST(SphereCollider, ProjectsToTheSurfaceAndRemovesOnlyInwardNormalVelocity) {
 class ClothOnSphere : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ClothOnSphere, NeverEntersTheSphereAndComesToRestWithoutJitter) {
-  auto scene = loadScene(SPRINGCHECK_SOURCE_DIR "/scenes/cloth_sphere.json");
+  auto scene = loadScene(SPRINGCHECK_SOURCE_DIR "/scenes/seed/cloth_sphere.json");
   ASSERT_TRUE(scene) << scene.error();
   scene->integrator.name = GetParam();
   auto system = makeSystem(*scene);

@@ -1,9 +1,15 @@
 #include "compare/engines.h"
 
+#include "reference/bullet_engine.h"
+
 namespace springcheck {
 
 const std::vector<std::string>& engineNames() {
-  static const std::vector<std::string> names = {"mysim"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all = {"mysim"};
+    for (const std::string& name : reference::bulletEngineNames()) all.push_back(name);
+    return all;
+  }();
   return names;
 }
 
@@ -30,6 +36,7 @@ std::expected<mysim::RunRecord, std::string> runMysim(const mysim::Scene& scene)
 std::expected<mysim::RunRecord, std::string> runEngine(const mysim::Scene& scene,
                                                        const std::string& engine) {
   if (engine == "mysim") return runMysim(scene);
+  if (auto bullet = reference::bulletEngineNamed(engine)) return reference::runBullet(scene, *bullet);
   std::string valid;
   for (const std::string& name : engineNames()) valid += (valid.empty() ? "" : ", ") + name;
   return std::unexpected("unknown engine '" + engine + "'; expected one of " + valid);

@@ -36,7 +36,8 @@ json summaryJson(const mysim::Scene& scene, const mysim::RunRecord& r) {
             {"solver_failures", r.counts.solver_failures},
             {"particles", r.frames.empty() ? 0 : r.frames.front().rows()},
             {"frames", r.frames.size()},
-            {"complete", !r.blowup.has_value()}};
+            {"complete", !r.blowup.has_value()},
+            {"notes", r.notes}};
   s["energy_start"] = r.energies.empty() ? json() : energyJson(r.energies.front());
   s["energy_end"] = r.energies.empty() ? json() : energyJson(r.energies.back());
   if (r.blowup) {

@@ -26,6 +26,7 @@ struct RunRecord {
   std::vector<ParticleRows> frames;  // (F) sampled states, finite only
   std::vector<EnergyTerms> energies; // (F) where the system has energy
   std::optional<BlowUp> blowup;
+  std::vector<std::string> notes;  // how the engine differs from the scene as written, if at all
 };
 
 struct RunSettings {

@@ -1,0 +1,69 @@
+#pragma once
+#include <BulletSoftBody/btDeformableLagrangianForce.h>
+
+#include "mysim/wind.h"
+
+namespace reference {
+
+// Forces the deformable world lacks, written against its Lagrangian force interface. Their types
+// must differ from Bullet's own (1..6), since addForce merges forces of one type: 7 and 8.
+
+// mysim's gusting wind as a Bullet deformable force: the deformable world ignores
+// btSoftBody::setWindVelocity, so the same per-particle force enters through a Lagrangian force.
+// It depends on time only, so every differential is zero.
+class DeformableWindForce final : public btDeformableLagrangianForce {
+ public:
+  DeformableWindForce(const mysim::Wind& wind, const double* time) : wind_(wind), time_(time) {}
+
+  void addScaledForces(btScalar scale, TVStack& force) override;
+  void addScaledExplicitForce(btScalar scale, TVStack& force) override;
+  void addScaledDampingForce(btScalar, TVStack&) override {}
+  void addScaledDampingForceDifferential(btScalar, const TVStack&, TVStack&) override {}
+  void buildDampingForceDifferentialDiagonal(btScalar, TVStack&) override {}
+  void addScaledElasticForceDifferential(btScalar, const TVStack&, TVStack&) override {}
+  double totalEnergy(btScalar) override { return 0.0; }
+  btDeformableLagrangianForceType getForceType() override {
+    return static_cast<btDeformableLagrangianForceType>(7);
+  }
+
+ private:
+  mysim::Wind wind_;
+  const double* time_;  // start of the step being taken, owned by the stepper
+};
+
+// Viscous drag F = -c v on every free node, solved with the damping forces (implicitly in both
+// modes). Bullet's own m_cfg.drag is a velocity scale applied before the solve, which the
+// implicit mode discards (it restarts from v_n): the chain never settled with it.
+class DeformableDragForce final : public btDeformableLagrangianForce {
+ public:
+  explicit DeformableDragForce(double drag) : drag_(drag) {}
+
+  void addScaledForces(btScalar scale, TVStack& force) override {
+    addScaledDampingForce(scale, force);
+  }
+  void addScaledExplicitForce(btScalar, TVStack&) override {}
+  void addScaledDampingForce(btScalar scale, TVStack& force) override;
+  // dF/dv = -c I.
+  void addScaledDampingForceDifferential(btScalar scale, const TVStack& dv, TVStack& df) override;
+  void buildDampingForceDifferentialDiagonal(btScalar scale, TVStack& diagonal) override;
+  void addScaledElasticForceDifferential(btScalar, const TVStack&, TVStack&) override {}
+  double totalEnergy(btScalar) override { return 0.0; }
+  btDeformableLagrangianForceType getForceType() override {
+    return static_cast<btDeformableLagrangianForceType>(8);
+  }
+
+ private:
+  // Calls f(node, its index) for every free node.
+  template <typename F>
+  void forFreeNodes(F f) const {
+    for (int b = 0; b < m_softBodies.size(); ++b) {
+      for (int p = 0; p < m_softBodies[b]->m_nodes.size(); ++p) {
+        const btSoftBody::Node& node = m_softBodies[b]->m_nodes[p];
+        if (node.m_im > 0) f(node, node.index);
+      }
+    }
+  }
+  double drag_;  // N s/m
+};
+
+}  // namespace reference

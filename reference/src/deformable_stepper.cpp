@@ -1,0 +1,142 @@
+// bullet-deformable and bullet-implicit: btDeformableMultiBodyDynamicsWorld with Bullet's own
+// mass-spring and gravity forces, set up in the order shared/bullet-notes.md gives.
+#include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
+#include <BulletSoftBody/btDeformableBodySolver.h>
+#include <BulletSoftBody/btDeformableGravityForce.h>
+#include <BulletSoftBody/btDeformableMassSpringForce.h>
+#include <BulletSoftBody/btDeformableMultiBodyConstraintSolver.h>
+#include <BulletSoftBody/btDeformableMultiBodyDynamicsWorld.h>
+#include <BulletSoftBody/btSoftBodyRigidBodyCollisionConfiguration.h>
+
+#include "deformable_forces.h"
+#include "engine_support.h"
+#include "steppers.h"
+#include "soft_body.h"
+#include "static_sphere.h"
+
+namespace reference {
+namespace {
+
+// m_cg and the Newton settings are protected: a subclass is the only way to set them.
+class TunedDeformableSolver final : public btDeformableBodySolver {
+ public:
+  void tune(double cg_tolerance, int cg_max_iterations, int newton_iterations) {
+    // Bullet's CG stops at r.z <= tol * min(1, r0.z): a squared, preconditioned residual. Our
+    // cg_tolerance bounds |r| / |b|, so the matching Bullet tolerance is its square.
+    m_cg.m_tolerance = cg_tolerance * cg_tolerance;
+    m_cg.m_maxIterations = cg_max_iterations;
+    m_maxNewtonIterations = newton_iterations;
+  }
+};
+
+class DeformableStepper final : public BulletStepper {
+ public:
+  DeformableStepper(const mysim::Scene& scene, const mysim::Model& model, bool implicit) {
+    config_ = std::make_unique<btSoftBodyRigidBodyCollisionConfiguration>();
+    dispatcher_ = std::make_unique<btCollisionDispatcher>(config_.get());
+    broadphase_ = std::make_unique<btDbvtBroadphase>();
+    solver_ = std::make_unique<TunedDeformableSolver>();
+    constraint_solver_ = std::make_unique<btDeformableMultiBodyConstraintSolver>();
+    constraint_solver_->setDeformableSolver(solver_.get());
+    world_ = std::make_unique<btDeformableMultiBodyDynamicsWorld>(
+        dispatcher_.get(), broadphase_.get(), constraint_solver_.get(), config_.get(),
+        solver_.get());
+    // Gravity both ways (the world info defaults to -10) and, below, as a deformable force: the
+    // only gravity the implicit solve sees.
+    const btVector3 g = toBt(model.gravity);
+    world_->setGravity(g);
+    btSoftBodyWorldInfo& info = world_->getWorldInfo();
+    info.m_gravity = g;
+    info.m_sparsesdf.setDefaultVoxelsz(model.sphere ? model.sphere->radius / 10 : 0.25);
+    info.m_sparsesdf.Reset();
+
+    body_.reset(buildSoftBody(info, model, [](btSoftBody&, const mysim::Spring&) { return nullptr; }));
+    body_->setActivationState(DISABLE_DEACTIVATION);  // else it sleeps below 0.04 m/s
+    body_->getCollisionShape()->setMargin(model.sphere ? std::max(model.sphere->margin, 1e-4) : 1e-3);
+    body_->m_cfg.collisions = 0;
+    if (model.sphere) {
+      body_->m_cfg.collisions = btSoftBody::fCollision::SDF_RD | btSoftBody::fCollision::SDF_RDN;
+      body_->m_cfg.kKHR = 1.0;  // contact hardness against static bodies: 0.1 by default (soft)
+      sphere_ = std::make_unique<StaticSphere>(*world_, *model.sphere);
+      if (implicit) {
+        notes_.push_back("implicit mode against a static sphere exploded in most set-ups tried "
+                         "(shared/bullet-notes.md); a blow-up here is Bullet's, reported as is");
+      }
+    }
+    world_->addSoftBody(body_.get());
+
+    // Bullet's mass-spring force: one stiffness for non-bending links, one for bending (flex)
+    // links, one damping (checkSupported refused anything else); damping along the link
+    // (conserve_angular = true), as mysim's.
+    double k = 0.0, k_bending = -1.0, c = 0.0;
+    for (const mysim::Spring& s : model.springs) {
+      (s.family == mysim::SpringFamily::Flex ? k_bending : k) = s.stiffness;
+      c = s.damping;
+    }
+    if (k == 0.0) k = k_bending;  // only flex springs: the other stiffness is unused
+    if (!model.springs.empty()) {
+      mass_spring_ = std::make_unique<btDeformableMassSpringForce>(k, c, true, k_bending);
+      world_->addForce(body_.get(), mass_spring_.get());
+    }
+    gravity_ = std::make_unique<btDeformableGravityForce>(g);
+    world_->addForce(body_.get(), gravity_.get());
+    if (model.wind) {
+      wind_ = std::make_unique<DeformableWindForce>(*model.wind, &time_);
+      world_->addForce(body_.get(), wind_.get());
+    }
+    if (model.drag > 0.0) {
+      drag_ = std::make_unique<DeformableDragForce>(model.drag);
+      world_->addForce(body_.get(), drag_.get());
+      notes_.push_back("drag as a custom damping force, solved with Bullet's implicit damping");
+    }
+    world_->setImplicit(implicit);
+    world_->setLineSearch(false);
+    world_->setUseProjection(implicit);  // implicit without projection does not move at all
+    // One Newton step: Baraff-Witkin's linearised backward Euler, as mysim's backward-euler.
+    solver_->tune(scene.integrator.cg_tolerance, scene.integrator.cg_max_iterations, 1);
+  }
+
+  ~DeformableStepper() override {
+    world_->removeSoftBody(body_.get());
+    sphere_.reset();
+  }
+
+  mysim::StepCounts step(mysim::OdeSystem& system, mysim::State& state, double h) override {
+    const mysim::ParticleSystem& particles = *system.particles();
+    time_ = state.t;
+    drivePins(*body_, particles, state.t, h);
+    world_->stepSimulation(h, 0);
+    state.t += h;
+    placePins(*body_, particles, state.t);
+    readNodes(*body_, state);
+    return {.accepted = 1};
+  }
+
+  const btSoftBody& body() const override { return *body_; }
+  const std::vector<std::string>& notes() const override { return notes_; }
+
+ private:
+  double time_ = 0.0;
+  std::vector<std::string> notes_;
+  std::unique_ptr<btSoftBodyRigidBodyCollisionConfiguration> config_;
+  std::unique_ptr<btCollisionDispatcher> dispatcher_;
+  std::unique_ptr<btDbvtBroadphase> broadphase_;
+  std::unique_ptr<TunedDeformableSolver> solver_;
+  std::unique_ptr<btDeformableMultiBodyConstraintSolver> constraint_solver_;
+  std::unique_ptr<btDeformableMultiBodyDynamicsWorld> world_;
+  std::unique_ptr<btSoftBody> body_;
+  std::unique_ptr<btDeformableMassSpringForce> mass_spring_;
+  std::unique_ptr<btDeformableGravityForce> gravity_;
+  std::unique_ptr<DeformableWindForce> wind_;
+  std::unique_ptr<DeformableDragForce> drag_;
+  std::unique_ptr<StaticSphere> sphere_;
+};
+
+}  // namespace
+
+std::unique_ptr<BulletStepper> makeDeformableStepper(const mysim::Scene& scene,
+                                                     const mysim::Model& model, bool implicit) {
+  return std::make_unique<DeformableStepper>(scene, model, implicit);
+}
+
+}  // namespace reference

@@ -1,0 +1,64 @@
+#include "soft_body.h"
+
+namespace reference {
+btSoftBody* buildSoftBody(btSoftBodyWorldInfo& info, const mysim::Model& model,
+                          const std::function<btSoftBody::Material*(btSoftBody&, const mysim::Spring&)>& material) {
+  const int n = model.particleCount();
+  btAlignedObjectArray<btVector3> positions;
+  btAlignedObjectArray<btScalar> masses;
+  positions.resize(n);
+  masses.resize(n);
+  for (int p = 0; p < n; ++p) {
+    positions[p] = toBt(mysim::at3(model.start_position, p));
+    masses[p] = model.pinned[p] ? 0.0 : model.mass[p];
+  }
+  auto* body = new btSoftBody(&info, n, &positions[0], &masses[0]);
+  for (int p = 0; p < n; ++p) {
+    body->m_nodes[p].index = p;  // the deformable solver addresses nodes by this index
+    body->m_nodes[p].m_v = toBt(mysim::at3(model.start_velocity, p));
+  }
+  for (const mysim::Spring& s : model.springs) {
+    body->appendLink(s.i, s.j, material(*body, s));
+    body->m_links[body->m_links.size() - 1].m_bbending = s.family == mysim::SpringFamily::Flex;
+  }
+  body->updateConstants();
+  for (int k = 0; k < body->m_links.size(); ++k) {
+    btSoftBody::Link& link = body->m_links[k];
+    link.m_rl = model.springs[k].rest_length;
+    link.m_c1 = link.m_rl * link.m_rl;
+  }
+  body->m_bUpdateRtCst = false;
+  return body;
+}
+
+void drivePins(btSoftBody& body, const mysim::ParticleSystem& system, double t, double h) {
+  if (!system.model().pin_motion) return;
+  for (int p = 0; p < system.particleCount(); ++p) {
+    if (!system.model().pinned[p]) continue;
+    btSoftBody::Node& node = body.m_nodes[p];
+    node.m_v = (toBt(system.pinPosition(p, t + h)) - node.m_x) / h;
+  }
+}
+
+void placePins(btSoftBody& body, const mysim::ParticleSystem& system, double t) {
+  for (int p = 0; p < system.particleCount(); ++p) {
+    if (!system.model().pinned[p]) continue;
+    btSoftBody::Node& node = body.m_nodes[p];
+    node.m_x = node.m_q = toBt(system.pinPosition(p, t));
+    node.m_v = node.m_vn = toBt(system.pinVelocity(t));
+  }
+}
+
+void readNodes(const btSoftBody& body, mysim::State& state) {
+  const int n = body.m_nodes.size();
+  state.y.resize(6 * n);
+  for (int p = 0; p < n; ++p) {
+    const btSoftBody::Node& node = body.m_nodes[p];
+    for (int k = 0; k < 3; ++k) {
+      state.y[3 * p + k] = node.m_x[k];
+      state.y[3 * n + 3 * p + k] = node.m_v[k];
+    }
+  }
+}
+
+}  // namespace reference

@@ -15,7 +15,9 @@ btSoftBody* buildSoftBody(btSoftBodyWorldInfo& info, const mysim::Model& model,
   auto* body = new btSoftBody(&info, n, &positions[0], &masses[0]);
   for (int p = 0; p < n; ++p) {
     body->m_nodes[p].index = p;  // the deformable solver addresses nodes by this index
-    body->m_nodes[p].m_v = toBt(mysim::at3(model.start_velocity, p));
+    // m_vn is the implicit solve's v_n: left at zero, the first step would forget the start
+    // velocity (measured: a free particle launched at 2.2 m/s landed 2.2 m off after 1 s).
+    body->m_nodes[p].m_v = body->m_nodes[p].m_vn = toBt(mysim::at3(model.start_velocity, p));
   }
   for (const mysim::Spring& s : model.springs) {
     body->appendLink(s.i, s.j, material(*body, s));

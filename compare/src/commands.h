@@ -10,5 +10,7 @@ enum ExitCode : int { kOk = 0, kFailure = 1, kBadInput = 2, kBlowUp = 3 };
 void addRunCommand(CLI::App& app, int& exit_code);
 void addListCommand(CLI::App& app, int& exit_code);
 void addSuiteCommand(CLI::App& app, int& exit_code);
+void addCompareCommand(CLI::App& app, int& exit_code);
+void addGateCommand(CLI::App& app, int& exit_code);
 
 }  // namespace springcheck

@@ -33,13 +33,34 @@ std::expected<mysim::RunRecord, std::string> runMysim(const mysim::Scene& scene)
 
 }  // namespace
 
-std::expected<mysim::RunRecord, std::string> runEngine(const mysim::Scene& scene,
-                                                       const std::string& engine) {
-  if (engine == "mysim") return runMysim(scene);
-  if (auto bullet = reference::bulletEngineNamed(engine)) return reference::runBullet(scene, *bullet);
+std::expected<void, std::string> checkEngineName(const std::string& engine) {
+  if (engine.rfind("mysim:", 0) == 0) {
+    auto name = mysim::canonicalIntegratorName(engine.substr(6));
+    if (!name) return std::unexpected("engine '" + engine + "': " + name.error());
+    return {};
+  }
+  for (const std::string& name : engineNames()) {
+    if (engine == name) return {};
+  }
   std::string valid;
   for (const std::string& name : engineNames()) valid += (valid.empty() ? "" : ", ") + name;
-  return std::unexpected("unknown engine '" + engine + "'; expected one of " + valid);
+  return std::unexpected("unknown engine '" + engine + "'; expected one of " + valid +
+                         " (or mysim:INTEGRATOR)");
+}
+
+std::expected<mysim::RunRecord, std::string> runEngine(const mysim::Scene& scene,
+                                                       const std::string& engine) {
+  if (auto known = checkEngineName(engine); !known) return std::unexpected(known.error());
+  if (engine == "mysim") return runMysim(scene);
+  // "mysim:INTEGRATOR" runs the scene with another integrator.
+  if (engine.rfind("mysim:", 0) == 0) {
+    mysim::Scene with_integrator = scene;
+    with_integrator.integrator.name = *mysim::canonicalIntegratorName(engine.substr(6));
+    auto record = runMysim(with_integrator);
+    if (record) record->engine = engine;
+    return record;
+  }
+  return reference::runBullet(scene, *reference::bulletEngineNamed(engine));
 }
 
 }  // namespace springcheck

@@ -8,6 +8,8 @@ int main(int argc, char** argv) {
   springcheck::addRunCommand(app, exit_code);
   springcheck::addListCommand(app, exit_code);
   springcheck::addSuiteCommand(app, exit_code);
+  springcheck::addCompareCommand(app, exit_code);
+  springcheck::addGateCommand(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,27 @@
+#pragma once
+#include <optional>
+#include <string>
+
+#include "mysim/scene.h"
+#include "mysim/simulation.h"
+
+namespace springcheck {
+
+// Error of a run against the scene's closed form, where it has one:
+//  - circle: max over frames of |(x, y) - exact|, exact = the start rotated by t;
+//  - a chain hanging straight down along gravity from one pin: max |y_j - y_j(closed form)| at
+//    the last frame, y_j = -[j L0 + (m g / k) j (2N - j + 1) / 2];
+//  - a pendulum (chain of two, one pinned): relative error of the period measured from the
+//    x-crossings of the bob against the rigid pendulum's T = 4 sqrt(L / g) K(sin(theta0 / 2)).
+struct ClosedFormError {
+  std::string quantity;  // what was compared
+  double error = 0.0;    // m for positions, relative for the period
+  double exact = 0.0;    // the closed-form value compared against (end position or period)
+};
+std::optional<ClosedFormError> closedFormError(const mysim::Scene& scene,
+                                               const mysim::RunRecord& run);
+
+// Complete elliptic integral of the first kind K(k), by the arithmetic-geometric mean.
+double ellipticK(double k);
+
+}  // namespace springcheck

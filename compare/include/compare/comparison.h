@@ -1,0 +1,34 @@
+#pragma once
+#include <expected>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "compare/run_metrics.h"
+
+namespace springcheck {
+
+// A scene run in several engines, with every metric per engine and per pair.
+struct Comparison {
+  mysim::Scene scene;
+  mysim::Model model;
+  std::vector<EngineRun> runs;
+  std::vector<std::string> refused;  // "engine: why" for engines that cannot run the scene
+  std::vector<EngineMetrics> engines;
+  std::vector<PairMetrics> pairs;  // every pair of runs that did not blow up
+};
+
+// Runs the engines; an engine that refuses the scene is listed in `refused`, not an error. Fails
+// only when an engine name is unknown.
+[[nodiscard]] std::expected<Comparison, std::string> compareScene(
+    const mysim::Scene& scene, const std::vector<std::string>& engines);
+
+void printComparison(std::ostream& out, const Comparison& c);
+
+// Writes each run into dir/ENGINE/ (the `run` files), and beside them comparison.json (all
+// metrics), engine_metrics.csv, pair_metrics.csv and series.csv (per frame and engine: time,
+// sag of the lowest point and the free edge, deepest penetration, total energy drift).
+[[nodiscard]] std::expected<void, std::string> writeComparison(const std::string& dir,
+                                                               const Comparison& c);
+
+}  // namespace springcheck

@@ -1,0 +1,21 @@
+#pragma once
+#include <vector>
+
+#include "mysim/energy.h"
+
+namespace springcheck {
+
+// Energy drift per frame, each term apart: (E(t) - E(0)) / E_ref. The textbook E(0) is often 0
+// here (a cloth starting at rest at height 0), so E_ref = max(|E(0)|, peak kinetic energy): the
+// energy the motion actually carries.
+struct EnergyDrift {
+  double reference = 0.0;  // E_ref, J
+  std::vector<double> kinetic, gravity, spring, total;
+  double max_abs_total = 0.0;  // max |total drift|
+  // Largest rise of the total above its lowest earlier value, in J. A damped scene without
+  // external work must not rise beyond round-off and the integrator's own error.
+  double max_rise = 0.0;
+};
+EnergyDrift energyDrift(const std::vector<mysim::EnergyTerms>& energies);
+
+}  // namespace springcheck

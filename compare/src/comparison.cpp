@@ -1,0 +1,210 @@
+#include "compare/comparison.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "compare/engines.h"
+#include "compare/penetration_metric.h"
+#include "compare/run_output.h"
+#include "compare/sag_metric.h"
+
+namespace springcheck {
+
+std::expected<Comparison, std::string> compareScene(const mysim::Scene& scene,
+                                                    const std::vector<std::string>& engines) {
+  Comparison c{scene, scene.kind == mysim::SystemKind::Circle ? mysim::Model{} : mysim::buildModel(scene), {}, {}, {}, {}};
+  for (const std::string& engine : engines) {
+    if (auto known = checkEngineName(engine); !known) return std::unexpected(known.error());
+  }
+  for (const std::string& engine : engines) {
+    auto record = runEngine(scene, engine);
+    if (!record) {
+      c.refused.push_back(engine + ": " + record.error());
+      continue;
+    }
+    record->engine = engine;
+    c.runs.push_back({engine, std::move(*record)});
+  }
+  for (const EngineRun& run : c.runs) c.engines.push_back(engineMetrics(scene, c.model, run));
+  for (std::size_t i = 0; i < c.runs.size(); ++i) {
+    for (std::size_t j = i + 1; j < c.runs.size(); ++j) {
+      if (c.runs[i].record.blowup || c.runs[j].record.blowup) continue;
+      c.pairs.push_back(pairMetrics(scene, c.model, c.runs[i], c.runs[j]));
+    }
+  }
+  return c;
+}
+
+namespace {
+
+std::string format(const std::optional<double>& v) {
+  if (!v) return "-";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", *v);
+  return text;
+}
+
+}  // namespace
+
+void printComparison(std::ostream& out, const Comparison& c) {
+  out << "scene " << c.scene.name << " (" << c.scene.source << "), dt " << c.scene.dt << " s, "
+      << c.scene.duration << " s\n";
+  for (const std::string& r : c.refused) out << "  refused: " << r << '\n';
+  char line[512];
+  std::snprintf(line, sizeof line, "  %-30s", "per engine");
+  out << line;
+  for (const EngineMetrics& m : c.engines) {
+    std::snprintf(line, sizeof line, " %18s", m.engine.c_str());
+    out << line;
+  }
+  out << '\n';
+  for (const MetricInfo& info : metricCatalog()) {
+    if (info.pair) continue;
+    std::snprintf(line, sizeof line, "  %-30s", (info.name + " [" + info.unit + "]").c_str());
+    out << line;
+    for (const EngineMetrics& m : c.engines) {
+      std::snprintf(line, sizeof line, " %18s", format(metricValue(m, info.name)).c_str());
+      out << line;
+    }
+    out << '\n';
+  }
+  for (const EngineMetrics& m : c.engines) {
+    if (m.blew_up) out << "  " << m.engine << ": BLOW-UP at t = " << m.blowup_time << " s\n";
+  }
+  if (c.pairs.empty()) return;
+  std::snprintf(line, sizeof line, "  %-40s", "per pair");
+  out << line;
+  for (const MetricInfo& info : metricCatalog()) {
+    if (!info.pair) continue;
+    std::snprintf(line, sizeof line, " %12s", info.name.substr(0, 12).c_str());
+    out << line;
+  }
+  out << '\n';
+  for (const PairMetrics& p : c.pairs) {
+    std::snprintf(line, sizeof line, "  %-40s", (p.a + " ~ " + p.b).c_str());
+    out << line;
+    for (const MetricInfo& info : metricCatalog()) {
+      if (!info.pair) continue;
+      std::snprintf(line, sizeof line, " %12s", format(metricValue(p, info.name)).c_str());
+      out << line;
+    }
+    out << '\n';
+  }
+}
+
+namespace {
+
+using nlohmann::json;
+
+json metricsJson(const EngineMetrics& m) {
+  json j = {{"engine", m.engine}, {"steps", m.steps}, {"wall_seconds", m.wall_seconds},
+            {"external_work", m.external_work}, {"energy_reference", m.drift.reference}};
+  for (const MetricInfo& info : metricCatalog()) {
+    if (info.pair) continue;
+    const auto v = metricValue(m, info.name);
+    j[info.name] = v ? json(*v) : json();
+  }
+  if (m.closed_form) {
+    j["closed_form"] = {{"quantity", m.closed_form->quantity}, {"exact", m.closed_form->exact}};
+  }
+  j["blowup_time"] = m.blew_up ? json(m.blowup_time) : json();
+  return j;
+}
+
+json pairJson(const PairMetrics& p) {
+  json j = {{"a", p.a}, {"b", p.b}, {"drape_argmax_node", p.drape.argmax}};
+  for (const MetricInfo& info : metricCatalog()) {
+    if (!info.pair) continue;
+    const auto v = metricValue(p, info.name);
+    j[info.name] = v ? json(*v) : json();
+  }
+  return j;
+}
+
+std::string safeDirName(std::string engine) {
+  for (char& ch : engine) {
+    if (ch == ':') ch = '_';
+  }
+  return engine;
+}
+
+}  // namespace
+
+std::expected<void, std::string> writeComparison(const std::string& dir, const Comparison& c) {
+  namespace fs = std::filesystem;
+  for (const EngineRun& run : c.runs) {
+    if (auto w = writeRunOutputs((fs::path(dir) / safeDirName(run.engine)).string(), c.scene,
+                                 run.record);
+        !w) {
+      return w;
+    }
+  }
+  json j = {{"scene", c.scene.name}, {"scene_file", c.scene.source}, {"dt", c.scene.dt},
+            {"duration", c.scene.duration}, {"refused", c.refused}};
+  j["engines"] = json::array();
+  for (const EngineMetrics& m : c.engines) j["engines"].push_back(metricsJson(m));
+  j["pairs"] = json::array();
+  for (const PairMetrics& p : c.pairs) j["pairs"].push_back(pairJson(p));
+  std::ofstream(fs::path(dir) / "comparison.json") << j.dump(2) << '\n';
+
+  std::ofstream engines(fs::path(dir) / "engine_metrics.csv");
+  engines.precision(10);
+  engines << "engine";
+  for (const MetricInfo& info : metricCatalog()) {
+    if (!info.pair) engines << ',' << info.name;
+  }
+  engines << ",wall_seconds,steps\n";
+  for (const EngineMetrics& m : c.engines) {
+    engines << m.engine;
+    for (const MetricInfo& info : metricCatalog()) {
+      if (info.pair) continue;
+      const auto v = metricValue(m, info.name);
+      engines << ',';
+      if (v) engines << *v;
+    }
+    engines << ',' << m.wall_seconds << ',' << m.steps << '\n';
+  }
+
+  std::ofstream pairs(fs::path(dir) / "pair_metrics.csv");
+  pairs.precision(10);
+  pairs << "a,b";
+  for (const MetricInfo& info : metricCatalog()) {
+    if (info.pair) pairs << ',' << info.name;
+  }
+  pairs << '\n';
+  for (const PairMetrics& p : c.pairs) {
+    pairs << p.a << ',' << p.b;
+    for (const MetricInfo& info : metricCatalog()) {
+      if (!info.pair) continue;
+      const auto v = metricValue(p, info.name);
+      pairs << ',';
+      if (v) pairs << *v;
+    }
+    pairs << '\n';
+  }
+
+  std::ofstream series(fs::path(dir) / "series.csv");
+  series.precision(10);
+  series << "engine,t,sag_lowest,sag_free_middle,penetration_deepest,energy_drift_total\n";
+  for (std::size_t r = 0; r < c.runs.size(); ++r) {
+    const mysim::RunRecord& rec = c.runs[r].record;
+    if (c.scene.kind == mysim::SystemKind::Circle) continue;
+    const SagSeries sag = sagOverTime(c.model, rec);
+    const EnergyDrift& drift = c.engines[r].drift;
+    for (std::size_t f = 0; f < rec.frames.size(); ++f) {
+      series << c.runs[r].engine << ',' << rec.times[f] << ',' << sag.lowest[f] << ',';
+      if (!sag.free_middle.empty()) series << sag.free_middle[f];
+      series << ',';
+      if (c.model.sphere) series << penetration(*c.model.sphere, rec.frames[f]).deepest;
+      series << ',';
+      if (f < drift.total.size()) series << drift.total[f];
+      series << '\n';
+    }
+  }
+  if (!series) return std::unexpected("cannot write " + (fs::path(dir) / "series.csv").string());
+  return {};
+}
+
+}  // namespace springcheck

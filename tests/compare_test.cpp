@@ -1,0 +1,217 @@
+// Every comparison metric on a hand-made case whose answer is known, and the gate.
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+#include "compare/closed_form.h"
+#include "compare/drape_metric.h"
+#include "compare/energy_metric.h"
+#include "compare/gate.h"
+#include "compare/penetration_metric.h"
+#include "compare/run_metrics.h"
+#include "compare/sag_metric.h"
+#include "compare/settling_metric.h"
+#include "compare/surface_distance.h"
+#include "compare/tolerances.h"
+#include "mysim/cloth.h"
+#include "mysim/cloth_mesh.h"
+
+namespace springcheck {
+namespace {
+
+using Eigen::Vector3d;
+
+TEST(DrapeMetric, NodeDistanceRmsMaxAndWhere) {
+  Positions a(3, 3), b(3, 3);
+  a << 0, 0, 0, 1, 0, 0, 2, 0, 0;
+  b << 0, 0, 0, 1, 3, 0, 2, 0, 4;  // node 1 off by 3, node 2 by 4
+  const NodeDistance d = nodeDistance(a, b);
+  EXPECT_DOUBLE_EQ(d.max, 4.0);
+  EXPECT_EQ(d.argmax, 2);
+  EXPECT_DOUBLE_EQ(d.rms, std::sqrt((9.0 + 16.0) / 3));
+}
+
+TEST(SurfaceDistance, PointTriangleDistanceInsideOnEdgeAtVertexAndDegenerate) {
+  const Vector3d a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
+  EXPECT_DOUBLE_EQ(pointTriangleDistance({0.2, 0.2, 0.5}, a, b, c), 0.5);     // above the face
+  EXPECT_DOUBLE_EQ(pointTriangleDistance({0.5, -2, 0}, a, b, c), 2.0);       // beside edge ab
+  EXPECT_DOUBLE_EQ(pointTriangleDistance({-3, -4, 0}, a, b, c), 5.0);        // nearest vertex a
+  EXPECT_DOUBLE_EQ(pointTriangleDistance({0.5, 1, 0}, a, b, b), 1.0);        // a segment
+  EXPECT_DOUBLE_EQ(pointTriangleDistance({0, 0, 2}, a, a, a), 2.0);          // a point
+}
+
+Surface flatSheet(int n, double height) {
+  mysim::ClothShape shape;
+  shape.rows = shape.cols = n;
+  mysim::Model model;
+  mysim::buildCloth(shape, model);  // 1 m square in the x-z plane
+  Surface s;
+  s.vertices.resize(n * n, 3);
+  for (int p = 0; p < n * n; ++p) s.vertices.row(p) = model.start_position.segment<3>(3 * p).transpose();
+  s.vertices.col(1).array() += height;
+  s.triangles = mysim::gridTriangles(*model.grid);
+  return s;
+}
+
+TEST(SurfaceDistance, CoarseAndFineSheetsOfOneSquareAreZeroApartAndOffsetsAreExact) {
+  const SurfaceDistance same = surfaceDistance(flatSheet(16, 0.0), flatSheet(64, 0.0));
+  EXPECT_LT(same.hausdorff, 1e-12);  // every vertex of either lies on the other's plane square
+  const SurfaceDistance lifted = surfaceDistance(flatSheet(16, 0.0), flatSheet(64, 0.03));
+  EXPECT_NEAR(lifted.chamfer, 0.03, 1e-12);
+  EXPECT_NEAR(lifted.hausdorff, 0.03, 1e-12);
+}
+
+TEST(SagMetric, LowestPointAndFreeEdgeMiddleBelowThePins) {
+  // 2 x 3 cloth, top corners pinned at y = 0; bottom row at y = -1, -1.5, -1.2.
+  mysim::Model model;
+  mysim::ClothShape shape;
+  shape.rows = 2;
+  shape.cols = 3;
+  mysim::buildCloth(shape, model);
+  model.pinned[0] = model.pinned[2] = 1;
+  model.gravity = mysim::Vec3(0, -9.8, 0);
+  mysim::RunRecord run;
+  mysim::ParticleRows frame = mysim::ParticleRows::Zero(6, 6);
+  frame(3, 1) = -1.0;
+  frame(4, 1) = -1.5;
+  frame(5, 1) = -1.2;
+  run.frames = {frame};
+  const SagSeries sag = sagOverTime(model, run);
+  EXPECT_DOUBLE_EQ(sag.lowest[0], 1.5);
+  EXPECT_DOUBLE_EQ(sag.free_middle[0], 1.5);  // odd column count: the middle node itself
+}
+
+TEST(PenetrationMetric, DeepestMeanAndCountOfNodesInside) {
+  const mysim::Sphere sphere{mysim::Vec3::Zero(), 1.0, 0.0};
+  mysim::ParticleRows frame = mysim::ParticleRows::Zero(3, 6);
+  frame.row(0).head<3>() << 0.9, 0, 0;  // 0.1 inside
+  frame.row(1).head<3>() << 0, 0.7, 0;  // 0.3 inside
+  frame.row(2).head<3>() << 0, 0, 2;    // outside
+  const Penetration p = penetration(sphere, frame);
+  EXPECT_EQ(p.count, 2);
+  EXPECT_NEAR(p.deepest, 0.3, 1e-15);
+  EXPECT_NEAR(p.mean_depth, 0.2, 1e-15);
+}
+
+TEST(EnergyMetric, DriftPerTermAndLargestRiseAboveAnEarlierLow) {
+  std::vector<mysim::EnergyTerms> e = {{0, 0, 0}, {2, -3, 0}, {1, -4, 0.5}, {0.5, -3.5, 1.5}};
+  // totals: 0, -1, -2.5, -1.5; peak kinetic 2 -> E_ref = 2.
+  const EnergyDrift d = energyDrift(e);
+  EXPECT_DOUBLE_EQ(d.reference, 2.0);
+  EXPECT_DOUBLE_EQ(d.total[2], -1.25);
+  EXPECT_DOUBLE_EQ(d.kinetic[1], 1.0);
+  EXPECT_DOUBLE_EQ(d.max_abs_total, 1.25);
+  EXPECT_DOUBLE_EQ(d.max_rise, 1.0);  // from -2.5 back up to -1.5
+}
+
+TEST(ClosedForm, EllipticKKnownValues) {
+  EXPECT_NEAR(ellipticK(0.0), std::numbers::pi / 2, 1e-15);
+  EXPECT_NEAR(ellipticK(std::sqrt(0.5)), 1.8540746773013719, 1e-14);  // the 90-degree pendulum
+}
+
+TEST(ClosedForm, ExactCircleFramesHaveZeroErrorAndAShiftedOneItsShift) {
+  mysim::Scene scene;
+  scene.kind = mysim::SystemKind::Circle;
+  mysim::RunRecord run;
+  for (double t : {0.0, 0.5, 1.0}) {
+    mysim::ParticleRows row = mysim::ParticleRows::Zero(1, 6);
+    row(0, 0) = std::cos(t);
+    row(0, 1) = std::sin(t);
+    run.times.push_back(t);
+    run.frames.push_back(row);
+  }
+  EXPECT_LT(closedFormError(scene, run)->error, 1e-15);
+  run.frames[2](0, 0) += 0.01;
+  EXPECT_NEAR(closedFormError(scene, run)->error, 0.01, 1e-15);
+}
+
+TEST(SettlingMetric, TimeAfterWhichKineticEnergyStaysLowAndMaxStrain) {
+  mysim::RunRecord run;
+  run.times = {0, 1, 2, 3, 4};
+  for (double ke : {1.0, 0.5, 1e-5, 2e-4, 1e-5}) run.energies.push_back({ke, 0, 0});
+  EXPECT_DOUBLE_EQ(*settlingTime(run, 1e-4), 4.0);  // the 2e-4 at t = 3 breaks the first calm
+  EXPECT_DOUBLE_EQ(*settlingTime(run, 1e-3), 2.0);
+  run.energies.back().kinetic = 0.1;
+  EXPECT_FALSE(settlingTime(run, 1e-4));
+
+  mysim::Model model;
+  model.springs.push_back({0, 1, 2.0, 1.0, 0.0, mysim::SpringFamily::Custom});
+  mysim::ParticleRows frame = mysim::ParticleRows::Zero(2, 6);
+  frame(1, 0) = 2.5;
+  run.frames = {frame};
+  EXPECT_DOUBLE_EQ(maxStrainOverRun(model, run), 0.25);
+}
+
+const std::string kRoot = SPRINGCHECK_SOURCE_DIR;
+
+std::string checkJson(const std::string& fields) {
+  return R"({"checks": [{)" + fields + "}]}";
+}
+const std::string kGoodCheck =
+    R"("scene": "scenes/matched/chain_hanging.json", "engines": ["mysim", "bullet-deformable"],
+       "metric": "drape_max", "bound": 1e-4, "why": "test")";
+
+TEST(Tolerances, MalformedFilesAreRefusedNamingTheCheckAndField) {
+  struct Case {
+    std::string text, expected;
+  };
+  const std::vector<Case> cases = {
+      {checkJson(R"("engines": ["mysim"], "metric": "sag_lowest", "bound": 1, "why": "w")"),
+       "checks[0].scene: missing"},
+      {checkJson(R"("scene": "scenes/none.json", "engines": ["mysim"], "metric": "sag_lowest",
+                    "bound": 1, "why": "w")"),
+       "checks[0].scene: unknown scene"},
+      {checkJson(R"("scene": "scenes/matched/chain_hanging.json", "engines": ["havok"],
+                    "metric": "sag_lowest", "bound": 1, "why": "w")"),
+       "checks[0].engines: unknown engine 'havok'"},
+      {checkJson(R"("scene": "scenes/matched/chain_hanging.json", "engines": ["mysim"],
+                    "metric": "wobble", "bound": 1, "why": "w")"),
+       "checks[0].metric: unknown metric 'wobble'"},
+      {checkJson(R"("scene": "scenes/matched/chain_hanging.json", "engines": ["mysim"],
+                    "metric": "drape_max", "bound": 1, "why": "w")"),
+       "checks[0].engines: metric 'drape_max' takes two engines"},
+      {checkJson(R"("scene": "scenes/matched/chain_hanging.json", "engines": ["mysim"],
+                    "metric": "sag_lowest", "bound": -1, "why": "w")"),
+       "checks[0].bound: expected a finite number >= 0"},
+      {checkJson(R"("scene": "scenes/matched/chain_hanging.json", "engines": ["mysim"],
+                    "metric": "sag_lowest", "bound": 1, "why": "")"),
+       "checks[0].why: expected the reason"},
+      {checkJson(kGoodCheck + R"(, "tolerance": 3)"), "checks[0].tolerance: unknown field"},
+      {R"({"checks": []})", "checks: expected a non-empty list"},
+  };
+  for (const Case& c : cases) {
+    auto parsed = parseTolerances(c.text, "tol.json", kRoot);
+    ASSERT_FALSE(parsed) << c.text;
+    EXPECT_EQ(parsed.error().rfind("tol.json: ", 0), 0u) << parsed.error();
+    EXPECT_NE(parsed.error().find(c.expected), std::string::npos) << parsed.error();
+  }
+  EXPECT_TRUE(parseTolerances(checkJson(kGoodCheck), "tol.json", kRoot));
+}
+
+TEST(Gate, FailsWhenABoundIsTightenedBelowTheMeasuredValue) {
+  auto tolerances = parseTolerances(checkJson(kGoodCheck), "tol.json", kRoot);
+  ASSERT_TRUE(tolerances) << tolerances.error();
+  const GateReport loose = runGate(*tolerances);
+  ASSERT_TRUE(loose.results[0].measured);
+  EXPECT_TRUE(loose.passed());
+  const double measured = *loose.results[0].measured;
+  EXPECT_GT(measured, 0.0);
+  tolerances->checks[0].bound = 0.5 * measured;
+  const GateReport tight = runGate(*tolerances);
+  EXPECT_FALSE(tight.passed());
+  EXPECT_DOUBLE_EQ(*tight.results[0].measured, measured);  // same input, same output
+}
+
+TEST(Gate, AnEngineThatRefusesTheSceneFailsItsCheck) {
+  auto tolerances = parseTolerances(
+      checkJson(R"("scene": "scenes/seed/cloth.json", "engines": ["bullet-classic"],
+                   "metric": "sag_lowest", "bound": 10, "why": "w")"),
+      "tol.json", kRoot);
+  ASSERT_TRUE(tolerances) << tolerances.error();
+  const GateReport report = runGate(*tolerances);
+  EXPECT_FALSE(report.passed());
+  EXPECT_NE(report.results[0].problem.find("refused"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace springcheck

@@ -56,7 +56,7 @@ INSTANTIATE_TEST_SUITE_P(
                       SeedCase{"circle", "rk4", 0.04, 31.4},
                       SeedCase{"pendulum", "euler", 0.0001, 2.0},
                       SeedCase{"pendulum", "trapezoidal", 0.002, 10.0},
-                      SeedCase{"pendulum", "rk4", 0.01, 10.0},
+                      SeedCase{"pendulum", "rk4", 0.04, 10.0},
                       SeedCase{"chain", "euler", 0.0002, 3.0},
                       SeedCase{"chain", "trapezoidal", 0.002, 10.0},
                       SeedCase{"chain", "rk4", 0.005, 10.0},

@@ -15,6 +15,7 @@ struct RunOptions {
   std::string integrator;
   double dt = 0.0;
   double duration = 0.0;
+  int classic_iterations = 0;
   std::string out;
 };
 
@@ -35,6 +36,7 @@ int runScene(const RunOptions& o) {
   }
   if (o.dt > 0.0) scene->dt = o.dt;
   if (o.duration > 0.0) scene->duration = o.duration;
+  if (o.classic_iterations > 0) scene->classic.iterations = o.classic_iterations;
   if (scene->dt > scene->duration) {
     std::cerr << "error: --dt " << scene->dt << " is longer than the duration " << scene->duration
               << '\n';
@@ -73,6 +75,9 @@ void addRunCommand(CLI::App& app, int& exit_code) {
       ->check(CLI::PositiveNumber);
   run->add_option("--duration", options->duration, "Duration in s (overrides the scene)")
       ->check(CLI::PositiveNumber);
+  run->add_option("--classic-iterations", options->classic_iterations,
+                  "bullet-classic solver passes per step (overrides bullet.classic_iterations)")
+      ->check(CLI::Range(1, 10000));
   run->add_option("--out", options->out, "Output directory (default out/SCENE/ENGINE)");
   run->callback([options, &exit_code] { exit_code = runScene(*options); });
 }

@@ -12,5 +12,7 @@ void addListCommand(CLI::App& app, int& exit_code);
 void addSuiteCommand(CLI::App& app, int& exit_code);
 void addCompareCommand(CLI::App& app, int& exit_code);
 void addGateCommand(CLI::App& app, int& exit_code);
+void addSweepCommands(CLI::App& app, int& exit_code);
+void addStabilityCommand(CLI::App& app, int& exit_code);
 
 }  // namespace springcheck

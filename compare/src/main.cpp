@@ -10,6 +10,8 @@ int main(int argc, char** argv) {
   springcheck::addSuiteCommand(app, exit_code);
   springcheck::addCompareCommand(app, exit_code);
   springcheck::addGateCommand(app, exit_code);
+  springcheck::addSweepCommands(app, exit_code);
+  springcheck::addStabilityCommand(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

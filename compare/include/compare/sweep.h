@@ -1,0 +1,76 @@
+#pragma once
+#include <expected>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mysim/scene.h"
+
+namespace springcheck {
+
+// A grid of runs: scenes x engines (x integrators for mysim) x steps x stiffness scales.
+// Schema in docs/sweeps.md.
+struct SweepSpec {
+  std::string source;
+  std::string name;
+  std::vector<std::string> scenes;           // paths, resolved against the spec's directory
+  std::vector<std::string> engines;          // "mysim" and/or Bullet engines
+  std::vector<std::string> integrators;      // mysim integrators
+  std::vector<double> dts;                   // s
+  std::vector<double> stiffness_scales{1.0}; // every spring's stiffness times this
+  std::optional<double> duration;            // s, overrides the scenes'
+  double sample_interval = 0.0;              // s, a multiple of every dt: frames line up
+  // The reference every row is measured against: the scene's closed form, or a converged run
+  // (`reference_integrator` at the smallest dt / `reference_refine`).
+  bool reference_closed_form = false;
+  std::string reference_integrator = "rk4";
+  int reference_refine = 16;
+};
+
+[[nodiscard]] std::expected<SweepSpec, std::string> loadSweepSpec(const std::string& path);
+
+// One run of the grid. `id` is its place in the full grid (stable across shards and resumes).
+struct SweepCase {
+  int id = 0;
+  std::string scene;
+  std::string engine;
+  std::string integrator;  // mysim's; the Bullet engines' own scheme otherwise
+  double dt = 0.0;
+  double stiffness_scale = 1.0;
+};
+std::vector<SweepCase> expandSweep(const SweepSpec& spec);
+
+// The scene of a case: the file with the case's integrator, step, stiffness and the spec's
+// duration and sampling applied.
+[[nodiscard]] std::expected<mysim::Scene, std::string> caseScene(const SweepSpec& spec,
+                                                                 const SweepCase& c);
+
+// Results table: one row per case, in this column order.
+const std::vector<std::string>& sweepColumns();
+using SweepRow = std::vector<std::string>;  // values in sweepColumns() order
+
+struct SweepOptions {
+  int jobs = 1;
+  int shard_index = 0;  // run cases with id % shard_count == shard_index
+  int shard_count = 1;
+  bool resume = true;   // keep rows already in the output file and skip their cases
+  std::function<void(int done, int total)> progress = nullptr;
+};
+
+// Runs the (remaining) cases of the spec in parallel, appending each finished row to `out_csv`
+// as soon as it is done (so an interrupted sweep loses only runs in flight), then rewrites the
+// file sorted by case id. Returns the number of cases run now.
+[[nodiscard]] std::expected<int, std::string> runSweep(const SweepSpec& spec,
+                                                       const std::string& out_csv,
+                                                       const SweepOptions& options);
+
+// Joins shard tables into one, sorted by case id; duplicate ids must agree on their parameters.
+[[nodiscard]] std::expected<int, std::string> mergeSweepTables(
+    const std::vector<std::string>& inputs, const std::string& out_csv);
+
+// Reads a results table written by runSweep: header check, rows by id.
+[[nodiscard]] std::expected<std::vector<SweepRow>, std::string> readSweepTable(
+    const std::string& path);
+
+}  // namespace springcheck

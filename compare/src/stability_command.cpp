@@ -1,0 +1,190 @@
+#include <sys/resource.h>
+
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include "commands.h"
+#include "compare/energy_metric.h"
+#include "compare/engines.h"
+#include "compare/stability.h"
+#include "mysim/scene_file.h"
+
+namespace springcheck {
+namespace {
+
+struct StabilityOptions {
+  std::string scene;
+  std::vector<std::string> integrators = {"euler", "trapezoidal", "rk4", "symplectic-euler",
+                                          "verlet", "backward-euler"};
+  std::vector<double> stiffness = {10, 100, 1e3, 1e4, 1e5};
+  std::vector<double> masses = {1e-6, 1e-2, 1.0};
+  double damping_ratio = 0.05;
+  std::string out = "out/stability";
+  bool extremes = false;
+  int jobs = 0;
+};
+
+std::string cell(const std::optional<double>& v) {
+  if (!v) return "";
+  std::ostringstream s;
+  s.precision(8);
+  s << *v;
+  return s.str();
+}
+
+// Runs f(k) for k in [0, n) over `jobs` threads.
+void parallelFor(int n, int jobs, const std::function<void(int)>& f) {
+  std::atomic<int> next{0};
+  std::vector<std::thread> threads;
+  for (int t = 0; t < jobs; ++t) {
+    threads.emplace_back([&] {
+      for (int k; (k = next++) < n;) f(k);
+    });
+  }
+  for (std::thread& t : threads) t.join();
+}
+
+// Very long runs, very small masses, a very large cloth: what happens at the extremes.
+void writeExtremes(const std::string& path, int jobs) {
+  std::ofstream out(path);
+  out.precision(8);
+  out << "case,integrator,quantity,value,unit\n";
+  // 10^6 steps of the undamped oscillator at h w = 0.1.
+  const std::vector<std::string> long_methods = {"symplectic-euler", "verlet", "rk4", "backward-euler", "trapezoidal"};
+  std::vector<std::string> rows(long_methods.size());
+  parallelFor(static_cast<int>(long_methods.size()), jobs, [&](int k) {
+    mysim::Scene s = oscillatorScene(100.0, 1.0, 0.0);
+    s.integrator.name = long_methods[k];
+    s.integrator.cg_tolerance = 1e-12;
+    s.dt = 0.01;
+    s.duration = 1e6 * s.dt;
+    s.sample_interval = s.duration / 1000;
+    auto r = runEngine(s, "mysim");
+    const EnergyDrift d = energyDrift(r->energies);
+    std::ostringstream row;
+    row.precision(8);
+    row << "oscillator 1e6 steps h w = 0.1," << long_methods[k] << ",energy drift max," << d.max_abs_total << ",rel\n"
+        << "oscillator 1e6 steps h w = 0.1," << long_methods[k] << ",energy drift end," << d.total.back() << ",rel\n"
+        << "oscillator 1e6 steps h w = 0.1," << long_methods[k] << ",wall time," << r->wall_seconds << ",s\n";
+    rows[k] = row.str();
+  });
+  for (const std::string& row : rows) out << row;
+
+  // A 256 x 256 cloth (the matched hanging cloth's 1 m, 0.5 kg and springs at 65 536 particles).
+  for (auto [integrator, dt, steps] : {std::tuple{"symplectic-euler", 1e-4, 50}, {"backward-euler", 2e-3, 5}}) {
+    mysim::Scene s;
+    s.name = "cloth256";
+    s.kind = mysim::SystemKind::Cloth;
+    s.cloth.rows = s.cloth.cols = 256;
+    s.cloth.particle_mass = 0.5 / (256.0 * 256.0);
+    s.cloth.structural = s.cloth.shear = mysim::SpringParameters{100.0, 0.0};
+    s.cloth.flex = mysim::SpringParameters{10.0, 0.0};
+    s.pins = {0, 255};
+    s.gravity = mysim::Vec3(0, -9.8, 0);
+    s.integrator.name = integrator;
+    s.integrator.cg_tolerance = 1e-6;
+    s.dt = dt;
+    s.duration = steps * dt;
+    s.sample_interval = s.duration;
+    auto r = runEngine(s, "mysim");
+    out << "cloth 256 x 256," << integrator << ",time per step," << r->wall_seconds / r->steps << ",s\n"
+        << "cloth 256 x 256," << integrator << ",stable," << (r->blowup ? 0 : 1) << ",1/0\n";
+    if (r->counts.linear_iterations) {
+      out << "cloth 256 x 256," << integrator << ",CG iterations per step,"
+          << double(r->counts.linear_iterations) / r->steps << ",1\n";
+    }
+  }
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  out << "process,all,peak resident memory," << usage.ru_maxrss / 1024.0 << ",MiB\n";
+}
+
+int stability(const StabilityOptions& o) {
+  const int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  for (const std::string& name : o.integrators) {
+    if (auto ok = mysim::canonicalIntegratorName(name); !ok) {
+      std::cerr << "error: --integrators: " << ok.error() << '\n';
+      return kBadInput;
+    }
+  }
+  std::optional<mysim::Scene> scene;
+  if (!o.scene.empty()) {
+    auto loaded = mysim::loadScene(o.scene);
+    if (!loaded) {
+      std::cerr << "error: " << loaded.error() << '\n';
+      return kBadInput;
+    }
+    scene = *loaded;
+  }
+  struct Combo {
+    std::string integrator;
+    double k, m;
+  };
+  std::vector<Combo> combos;
+  for (const std::string& i : o.integrators) {
+    for (double k : o.stiffness) {
+      for (double m : o.masses) combos.push_back({*mysim::canonicalIntegratorName(i), k, m});
+    }
+  }
+  std::vector<StabilityLimit> limits(combos.size());
+  std::mutex mutex;
+  int done = 0;
+  parallelFor(static_cast<int>(combos.size()), jobs, [&](int k) {
+    const Combo& c = combos[k];
+    limits[k] = scene ? sceneStability(*scene, c.integrator, c.k, c.m, scene->duration / 1e5,
+                                       scene->duration / 10, 0.02)
+                      : oscillatorStability(c.integrator, c.k, c.m, o.damping_ratio, {});
+    std::lock_guard<std::mutex> lock(mutex);
+    ++done;
+    if (done % std::max<int>(1, combos.size() / 10) == 0 || done == static_cast<int>(combos.size())) {
+      std::cerr << "stability: " << done << "/" << combos.size() << " done\n";
+    }
+  });
+  std::filesystem::create_directories(o.out);
+  std::ofstream out(o.out + "/stability.csv");
+  out.precision(8);
+  out << "system,integrator,stiffness,mass,omega,damping_ratio,h_stable,h_unstable,status,theory_h,ratio\n";
+  std::printf("%-12s %-17s %9s %9s %11s %11s %11s %7s\n", "system", "integrator", "k [N/m]",
+              "m [kg]", "h_max [s]", "theory [s]", "h w", "ratio");
+  for (const StabilityLimit& l : limits) {
+    const double w = std::sqrt(l.stiffness / l.mass);
+    std::optional<double> ratio;
+    if (l.theory && std::isfinite(*l.theory) && *l.theory > 0 && l.status == "bracketed") {
+      ratio = l.h_stable / *l.theory;
+    }
+    out << l.system << ',' << l.integrator << ',' << l.stiffness << ',' << l.mass << ',' << w << ','
+        << (scene ? 0.0 : o.damping_ratio) << ',' << l.h_stable << ',' << l.h_unstable << ','
+        << l.status << ',' << cell(l.theory) << ',' << cell(ratio) << '\n';
+    std::printf("%-12s %-17s %9.3g %9.3g %11.4g %11s %11.4g %7s  %s\n", l.system.c_str(),
+                l.integrator.c_str(), l.stiffness, l.mass, l.h_stable, cell(l.theory).c_str(),
+                l.h_stable * w, cell(ratio).substr(0, 6).c_str(), l.status.c_str());
+  }
+  if (o.extremes) writeExtremes(o.out + "/extremes.csv", jobs);
+  std::cout << "results in " << o.out << '\n';
+  return kOk;
+}
+
+}  // namespace
+
+void addStabilityCommand(CLI::App& app, int& exit_code) {
+  auto o = std::make_shared<StabilityOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "stability", "Largest stable step per integrator, stiffness and mass (bisection)");
+  cmd->add_option("--scene", o->scene, "Scene (default: the built-in oscillator, with theory lines)");
+  cmd->add_option("--integrators", o->integrators, "Integrators")->delimiter(',')->capture_default_str();
+  cmd->add_option("--stiffness", o->stiffness, "Spring stiffness values, N/m")->delimiter(',')->capture_default_str();
+  cmd->add_option("--masses", o->masses, "Particle masses, kg")->delimiter(',')->capture_default_str();
+  cmd->add_option("--damping-ratio", o->damping_ratio, "Oscillator damping ratio (drag)")->capture_default_str();
+  cmd->add_option("--out", o->out, "Output directory")->capture_default_str();
+  cmd->add_flag("--extremes", o->extremes, "Also: 1e6-step energy drift, a 256 x 256 cloth");
+  cmd->add_option("--jobs", o->jobs, "Parallel runs (default: all cores)");
+  cmd->callback([o, &exit_code] { exit_code = stability(*o); });
+}
+
+}  // namespace springcheck

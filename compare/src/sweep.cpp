@@ -1,0 +1,436 @@
+#include "compare/sweep.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "compare/closed_form.h"
+#include "compare/drape_metric.h"
+#include "compare/energy_metric.h"
+#include "compare/engines.h"
+#include "compare/settling_metric.h"
+#include "mysim/scene_file.h"
+
+namespace springcheck {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+std::string number(double v) {
+  std::ostringstream out;
+  out.precision(10);
+  out << v;
+  return out.str();
+}
+
+std::expected<std::vector<double>, std::string> positiveList(const json& j, const std::string& field) {
+  if (!j.is_array() || j.empty()) return std::unexpected(field + ": expected a non-empty list of numbers > 0");
+  std::vector<double> values;
+  for (const json& v : j) {
+    if (!v.is_number() || !(v.get<double>() > 0) || !std::isfinite(v.get<double>())) {
+      return std::unexpected(field + ": expected numbers > 0, got " + v.dump());
+    }
+    values.push_back(v.get<double>());
+  }
+  return values;
+}
+
+std::expected<std::vector<std::string>, std::string> stringList(const json& j, const std::string& field) {
+  if (!j.is_array() || j.empty()) return std::unexpected(field + ": expected a non-empty list of names");
+  std::vector<std::string> values;
+  for (const json& v : j) {
+    if (!v.is_string()) return std::unexpected(field + ": expected names, got " + v.dump());
+    values.push_back(v.get<std::string>());
+  }
+  return values;
+}
+
+// True when `interval` is a whole multiple of `dt` (to 1e-9 relative).
+bool multipleOf(double interval, double dt) {
+  const double ratio = interval / dt;
+  return std::abs(ratio - std::round(ratio)) < 1e-9 * ratio;
+}
+
+std::expected<SweepSpec, std::string> parseSpec(const json& j, const std::string& source) {
+  auto bad = [&](const std::string& message) { return std::unexpected(source + ": " + message); };
+  if (!j.is_object()) return bad("expected an object");
+  static const std::set<std::string> known = {"$comment", "name", "scenes", "engines", "integrators", "dt",
+                                              "stiffness_scale", "duration", "sample_interval", "reference"};
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    if (!known.count(it.key())) return bad(it.key() + ": unknown field (see docs/sweeps.md)");
+  }
+  SweepSpec s;
+  s.source = source;
+  s.name = j.value("name", fs::path(source).stem().string());
+  const fs::path base = fs::path(source).parent_path();
+  if (!j.contains("scenes")) return bad("scenes: missing (required)");
+  auto scenes = stringList(j["scenes"], "scenes");
+  if (!scenes) return bad(scenes.error());
+  for (std::size_t k = 0; k < scenes->size(); ++k) {
+    const std::string path = (base / (*scenes)[k]).lexically_normal().string();
+    if (auto scene = mysim::loadScene(path); !scene) {
+      return bad("scenes[" + std::to_string(k) + "]: " + scene.error());
+    }
+    s.scenes.push_back(path);
+  }
+  if (j.contains("engines")) {
+    auto engines = stringList(j["engines"], "engines");
+    if (!engines) return bad(engines.error());
+    for (const std::string& e : *engines) {
+      if (e.find(':') != std::string::npos) return bad("engines: list integrators under \"integrators\", not as " + e);
+      if (auto ok = checkEngineName(e); !ok) return bad("engines: " + ok.error());
+    }
+    s.engines = *engines;
+  } else {
+    s.engines = {"mysim"};
+  }
+  if (j.contains("integrators")) {
+    auto integrators = stringList(j["integrators"], "integrators");
+    if (!integrators) return bad(integrators.error());
+    for (const std::string& name : *integrators) {
+      auto canonical = mysim::canonicalIntegratorName(name);
+      if (!canonical) return bad("integrators: " + canonical.error());
+      s.integrators.push_back(*canonical);
+    }
+  } else {
+    s.integrators = {"rk4"};
+  }
+  if (!j.contains("dt")) return bad("dt: missing (required)");
+  auto dts = positiveList(j["dt"], "dt");
+  if (!dts) return bad(dts.error());
+  s.dts = *dts;
+  if (j.contains("stiffness_scale")) {
+    auto scales = positiveList(j["stiffness_scale"], "stiffness_scale");
+    if (!scales) return bad(scales.error());
+    s.stiffness_scales = *scales;
+  }
+  if (j.contains("duration")) {
+    if (!j["duration"].is_number() || !(j["duration"].get<double>() > 0)) return bad("duration: expected a number > 0");
+    s.duration = j["duration"].get<double>();
+  }
+  s.sample_interval = *std::max_element(s.dts.begin(), s.dts.end());
+  if (j.contains("sample_interval")) {
+    if (!j["sample_interval"].is_number() || !(j["sample_interval"].get<double>() > 0)) {
+      return bad("sample_interval: expected a number > 0");
+    }
+    s.sample_interval = j["sample_interval"].get<double>();
+  }
+  for (double dt : s.dts) {
+    if (!multipleOf(s.sample_interval, dt)) {
+      return bad("sample_interval: " + number(s.sample_interval) + " s is not a multiple of dt " +
+                 number(dt) + " s (frames of all runs must line up)");
+    }
+  }
+  if (!j.contains("reference")) return bad("reference: missing (\"closed_form\" or {\"integrator\", \"refine\"})");
+  const json& ref = j["reference"];
+  if (ref.is_string() && ref.get<std::string>() == "closed_form") {
+    s.reference_closed_form = true;
+  } else if (ref.is_object()) {
+    auto name = mysim::canonicalIntegratorName(ref.value("integrator", "rk4"));
+    if (!name) return bad("reference.integrator: " + name.error());
+    s.reference_integrator = *name;
+    if (ref.contains("refine") && (!ref["refine"].is_number_integer() || ref["refine"].get<int>() < 1)) {
+      return bad("reference.refine: expected an integer >= 1");
+    }
+    s.reference_refine = ref.value("refine", 16);
+  } else {
+    return bad("reference: expected \"closed_form\" or {\"integrator\": NAME, \"refine\": N}");
+  }
+  return s;
+}
+
+void scaleStiffness(mysim::Scene& scene, double scale) {
+  scene.chain.stiffness *= scale;
+  for (auto* family : {&scene.cloth.structural, &scene.cloth.shear, &scene.cloth.flex}) {
+    if (*family) (*family)->stiffness *= scale;
+  }
+  for (mysim::Spring& s : scene.springs) s.stiffness *= scale;
+}
+
+}  // namespace
+
+std::expected<SweepSpec, std::string> loadSweepSpec(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return std::unexpected(path + ": cannot open the sweep spec");
+  json j;
+  try {
+    j = json::parse(in);
+  } catch (const json::parse_error& e) {
+    return std::unexpected(path + ": not valid JSON: " + e.what());
+  }
+  return parseSpec(j, path);
+}
+
+std::vector<SweepCase> expandSweep(const SweepSpec& spec) {
+  std::vector<SweepCase> cases;
+  for (const std::string& scene : spec.scenes) {
+    for (double scale : spec.stiffness_scales) {
+      for (const std::string& engine : spec.engines) {
+        const std::vector<std::string> integrators =
+            engine == "mysim" ? spec.integrators : std::vector<std::string>{"-"};
+        for (const std::string& integrator : integrators) {
+          for (double dt : spec.dts) {
+            cases.push_back({static_cast<int>(cases.size()), scene, engine, integrator, dt, scale});
+          }
+        }
+      }
+    }
+  }
+  return cases;
+}
+
+std::expected<mysim::Scene, std::string> caseScene(const SweepSpec& spec, const SweepCase& c) {
+  auto scene = mysim::loadScene(c.scene);
+  if (!scene) return scene;
+  if (c.integrator != "-") scene->integrator.name = c.integrator;
+  scene->dt = c.dt;
+  if (spec.duration) scene->duration = *spec.duration;
+  scene->sample_interval = spec.sample_interval;
+  scaleStiffness(*scene, c.stiffness_scale);
+  return scene;
+}
+
+const std::vector<std::string>& sweepColumns() {
+  static const std::vector<std::string> columns = {
+      "case_id", "scene", "engine", "integrator", "dt", "stiffness_scale", "status",
+      "blowup_time", "blowup_check", "wall_seconds", "steps", "derivative_evaluations",
+      "accepted_steps", "rejected_steps", "linear_iterations", "reference", "error",
+      "final_error", "energy_drift_max", "energy_rise", "max_strain", "note"};
+  return columns;
+}
+
+namespace {
+
+constexpr int kParameterColumns = 6;  // case_id .. stiffness_scale
+
+using ReferenceKey = std::pair<std::string, double>;  // scene, stiffness scale
+
+// Max over frames and last-frame RMS node distance between a run and its reference.
+std::pair<double, double> trajectoryError(const mysim::RunRecord& run, const mysim::RunRecord& ref) {
+  double worst = 0.0, last = 0.0;
+  const std::size_t frames = std::min(run.frames.size(), ref.frames.size());
+  for (std::size_t f = 0; f < frames; ++f) {
+    last = nodeDistance(run.frames[f].leftCols<3>(), ref.frames[f].leftCols<3>()).rms;
+    worst = std::max(worst, last);
+  }
+  return {worst, last};
+}
+
+std::string sanitize(std::string text) {
+  std::replace(text.begin(), text.end(), ',', ';');
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  return text;
+}
+
+SweepRow runCase(const SweepSpec& spec, const SweepCase& c,
+                 const std::map<ReferenceKey, mysim::RunRecord>& references) {
+  SweepRow row = {std::to_string(c.id), c.scene, c.engine, c.integrator, number(c.dt),
+                  number(c.stiffness_scale)};
+  row.resize(sweepColumns().size());
+  auto set = [&](const std::string& column, const std::string& value) {
+    const auto& cols = sweepColumns();
+    row[std::find(cols.begin(), cols.end(), column) - cols.begin()] = value;
+  };
+  auto scene = caseScene(spec, c);
+  auto record = scene ? runEngine(*scene, c.engine) : std::unexpected(scene.error());
+  if (!record) {
+    set("status", "refused");
+    set("note", sanitize(record.error()));
+    return row;
+  }
+  const mysim::RunRecord& r = *record;
+  set("status", r.blowup ? "blowup" : "ok");
+  if (r.blowup) {
+    set("blowup_time", number(r.blowup->time));
+    set("blowup_check", r.blowup->check);
+  }
+  set("wall_seconds", number(r.wall_seconds));
+  set("steps", std::to_string(r.steps));
+  set("derivative_evaluations", std::to_string(r.counts.derivative_evaluations));
+  set("accepted_steps", std::to_string(r.counts.accepted));
+  set("rejected_steps", std::to_string(r.counts.rejected));
+  set("linear_iterations", std::to_string(r.counts.linear_iterations));
+  if (!r.energies.empty()) {
+    const EnergyDrift drift = energyDrift(r.energies);
+    set("energy_drift_max", number(drift.max_abs_total));
+    set("energy_rise", number(drift.max_rise));
+  }
+  if (scene->kind != mysim::SystemKind::Circle) {
+    set("max_strain", number(maxStrainOverRun(mysim::buildModel(*scene), r)));
+  }
+  set("note", sanitize([&] {
+        std::string notes;
+        for (const std::string& n : r.notes) notes += (notes.empty() ? "" : "; ") + n;
+        return notes;
+      }()));
+  if (r.blowup) return row;  // errors of a blown-up run mean nothing
+  if (spec.reference_closed_form) {
+    if (auto cf = closedFormError(*scene, r)) {
+      set("reference", "closed_form: " + cf->quantity);
+      set("error", number(cf->error));
+      set("final_error", number(cf->error));
+    }
+  } else {
+    const auto it = references.find({c.scene, c.stiffness_scale});
+    if (it != references.end()) {
+      const auto [worst, last] = trajectoryError(r, it->second);
+      set("reference", spec.reference_integrator + " at dt/" + std::to_string(spec.reference_refine));
+      set("error", number(worst));
+      set("final_error", number(last));
+    }
+  }
+  return row;
+}
+
+std::vector<std::string> splitCsvLine(const std::string& line) {
+  std::vector<std::string> fields;
+  std::stringstream in(line);
+  std::string field;
+  while (std::getline(in, field, ',')) fields.push_back(field);
+  if (!line.empty() && line.back() == ',') fields.push_back("");
+  return fields;
+}
+
+std::string joinRow(const SweepRow& row) {
+  std::string line;
+  for (std::size_t k = 0; k < row.size(); ++k) line += (k ? "," : "") + row[k];
+  return line;
+}
+
+std::string header() { return joinRow(sweepColumns()); }
+
+std::expected<void, std::string> writeSorted(const std::string& path, std::vector<SweepRow> rows) {
+  std::sort(rows.begin(), rows.end(), [](const SweepRow& a, const SweepRow& b) {
+    return std::stoi(a[0]) < std::stoi(b[0]);
+  });
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp);
+    out << header() << '\n';
+    for (const SweepRow& row : rows) out << joinRow(row) << '\n';
+    if (!out) return std::unexpected("cannot write " + tmp);
+  }
+  std::error_code ec;
+  fs::rename(tmp, path, ec);
+  if (ec) return std::unexpected("cannot rename " + tmp + ": " + ec.message());
+  return {};
+}
+
+}  // namespace
+
+std::expected<std::vector<SweepRow>, std::string> readSweepTable(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return std::unexpected(path + ": cannot open");
+  std::string line;
+  if (!std::getline(in, line) || line != header()) {
+    return std::unexpected(path + ": not a sweep table (header differs from: " + header() + ")");
+  }
+  std::vector<SweepRow> rows;
+  int number_line = 1;
+  while (std::getline(in, line)) {
+    ++number_line;
+    if (line.empty()) continue;
+    SweepRow row = splitCsvLine(line);
+    // A row cut short by an interruption is dropped: its case runs again.
+    if (row.size() != sweepColumns().size()) continue;
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+std::expected<int, std::string> runSweep(const SweepSpec& spec, const std::string& out_csv,
+                                         const SweepOptions& options) {
+  std::vector<SweepRow> kept;
+  std::set<int> done;
+  if (options.resume && fs::exists(out_csv)) {
+    auto existing = readSweepTable(out_csv);
+    if (!existing) return std::unexpected(existing.error());
+    kept = *existing;
+    for (const SweepRow& row : kept) done.insert(std::stoi(row[0]));
+  }
+  std::vector<SweepCase> todo;
+  for (const SweepCase& c : expandSweep(spec)) {
+    if (c.id % options.shard_count != options.shard_index || done.count(c.id)) continue;
+    todo.push_back(c);
+  }
+  // Rows so far, then each new row appended the moment it is done.
+  if (auto written = writeSorted(out_csv, kept); !written) return std::unexpected(written.error());
+
+  // Converged references, one per (scene, stiffness), before the cases that need them.
+  std::map<ReferenceKey, mysim::RunRecord> references;
+  if (!spec.reference_closed_form) {
+    std::set<ReferenceKey> keys;
+    for (const SweepCase& c : todo) keys.insert({c.scene, c.stiffness_scale});
+    const double finest = *std::min_element(spec.dts.begin(), spec.dts.end());
+    std::vector<ReferenceKey> list(keys.begin(), keys.end());
+    std::vector<std::expected<mysim::RunRecord, std::string>> results(list.size());
+    std::atomic<std::size_t> next{0};
+    auto work = [&] {
+      for (std::size_t k; (k = next++) < list.size();) {
+        SweepCase c{-1, list[k].first, "mysim", spec.reference_integrator, finest / spec.reference_refine, list[k].second};
+        auto scene = caseScene(spec, c);
+        results[k] = scene ? runEngine(*scene, "mysim") : std::unexpected(scene.error());
+      }
+    };
+    std::vector<std::thread> threads;
+    for (int t = 0; t < std::max(1, options.jobs); ++t) threads.emplace_back(work);
+    for (std::thread& t : threads) t.join();
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      if (!results[k]) return std::unexpected("reference run of " + list[k].first + ": " + results[k].error());
+      if (results[k]->blowup) return std::unexpected("reference run of " + list[k].first + " blew up");
+      references.emplace(list[k], std::move(*results[k]));
+    }
+  }
+
+  std::ofstream out(out_csv, std::ios::app);
+  std::mutex mutex;
+  std::atomic<std::size_t> next{0};
+  int finished = 0;
+  auto work = [&] {
+    for (std::size_t k; (k = next++) < todo.size();) {
+      SweepRow row = runCase(spec, todo[k], references);
+      std::lock_guard<std::mutex> lock(mutex);
+      out << joinRow(row) << '\n' << std::flush;
+      kept.push_back(std::move(row));
+      ++finished;
+      if (options.progress) options.progress(finished, static_cast<int>(todo.size()));
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int t = 0; t < std::max(1, options.jobs); ++t) threads.emplace_back(work);
+  for (std::thread& t : threads) t.join();
+  out.close();
+  if (auto written = writeSorted(out_csv, kept); !written) return std::unexpected(written.error());
+  return finished;
+}
+
+std::expected<int, std::string> mergeSweepTables(const std::vector<std::string>& inputs,
+                                                 const std::string& out_csv) {
+  std::map<int, SweepRow> rows;
+  for (const std::string& input : inputs) {
+    auto table = readSweepTable(input);
+    if (!table) return std::unexpected(table.error());
+    for (SweepRow& row : *table) {
+      const int id = std::stoi(row[0]);
+      auto [it, inserted] = rows.emplace(id, row);
+      if (!inserted && !std::equal(row.begin(), row.begin() + kParameterColumns, it->second.begin())) {
+        return std::unexpected(input + ": case " + row[0] + " has other parameters than in an earlier table: not shards of one sweep");
+      }
+    }
+  }
+  std::vector<SweepRow> all;
+  for (auto& [id, row] : rows) all.push_back(std::move(row));
+  if (auto written = writeSorted(out_csv, all); !written) return std::unexpected(written.error());
+  return static_cast<int>(all.size());
+}
+
+}  // namespace springcheck

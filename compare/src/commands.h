@@ -14,5 +14,6 @@ void addCompareCommand(CLI::App& app, int& exit_code);
 void addGateCommand(CLI::App& app, int& exit_code);
 void addSweepCommands(CLI::App& app, int& exit_code);
 void addStabilityCommand(CLI::App& app, int& exit_code);
+void addReportCommand(CLI::App& app, int& exit_code);
 
 }  // namespace springcheck

@@ -185,6 +185,20 @@ std::expected<void, std::string> writeComparison(const std::string& dir, const C
     pairs << '\n';
   }
 
+  // Per-node distance of every run's final shape to the first run's (for drape colour maps).
+  std::ofstream nodes(fs::path(dir) / "node_distance.csv");
+  nodes.precision(10);
+  nodes << "engine,reference_engine,node,distance\n";
+  for (std::size_t r = 1; r < c.runs.size() && !c.runs.empty(); ++r) {
+    if (c.runs[0].record.blowup || c.runs[r].record.blowup) continue;
+    const mysim::ParticleRows& a = c.runs[0].record.frames.back();
+    const mysim::ParticleRows& b = c.runs[r].record.frames.back();
+    for (int i = 0; i < a.rows(); ++i) {
+      nodes << c.runs[r].engine << ',' << c.runs[0].engine << ',' << i << ','
+            << (a.row(i).head<3>() - b.row(i).head<3>()).norm() << '\n';
+    }
+  }
+
   std::ofstream series(fs::path(dir) / "series.csv");
   series.precision(10);
   series << "engine,t,sag_lowest,sag_free_middle,penetration_deepest,energy_drift_total\n";

@@ -4,13 +4,18 @@
 #include "commands.h"
 #include "compare/gate.h"
 
+#include <fstream>
+#include <nlohmann/json.hpp>
+
 namespace springcheck {
 
 void addGateCommand(CLI::App& app, int& exit_code) {
   auto path = std::make_shared<std::string>("compare/tolerances.json");
+  auto json_out = std::make_shared<std::string>();
   CLI::App* cmd = app.add_subcommand("gate", "Check every bound of a tolerances file");
   cmd->add_option("--tolerances", *path, "Tolerances file")->capture_default_str();
-  cmd->callback([path, &exit_code] {
+  cmd->add_option("--json", *json_out, "Also write every check's result to this JSON file");
+  cmd->callback([path, json_out, &exit_code] {
     auto tolerances = loadTolerances(*path);
     if (!tolerances) {
       std::cerr << "error: " << tolerances.error() << '\n';
@@ -19,6 +24,16 @@ void addGateCommand(CLI::App& app, int& exit_code) {
     }
     const GateReport report = runGate(*tolerances);
     printGate(std::cout, report);
+    if (!json_out->empty()) {
+      nlohmann::json results = nlohmann::json::array();
+      for (const CheckResult& r : report.results) {
+        results.push_back({{"scene", r.check.scene}, {"engines", r.check.engines},
+                           {"metric", r.check.metric}, {"bound", r.check.bound},
+                           {"why", r.check.why}, {"passed", r.passed}, {"problem", r.problem},
+                           {"measured", r.measured ? nlohmann::json(*r.measured) : nlohmann::json()}});
+      }
+      std::ofstream(*json_out) << nlohmann::json{{"tolerances", *path}, {"checks", results}}.dump(2) << '\n';
+    }
     exit_code = report.passed() ? kOk : kFailure;
   });
 }

@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   springcheck::addGateCommand(app, exit_code);
   springcheck::addSweepCommands(app, exit_code);
   springcheck::addStabilityCommand(app, exit_code);
+  springcheck::addReportCommand(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -26,7 +26,8 @@ struct Comparison {
 void printComparison(std::ostream& out, const Comparison& c);
 
 // Writes each run into dir/ENGINE/ (the `run` files), and beside them comparison.json (all
-// metrics), engine_metrics.csv, pair_metrics.csv and series.csv (per frame and engine: time,
+// metrics), engine_metrics.csv, pair_metrics.csv, node_distance.csv (each run's final per-node
+// distance to the first run's) and series.csv (per frame and engine: time,
 // sag of the lowest point and the free edge, deepest penetration, total energy drift).
 [[nodiscard]] std::expected<void, std::string> writeComparison(const std::string& dir,
                                                                const Comparison& c);

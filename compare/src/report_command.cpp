@@ -1,0 +1,43 @@
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <iostream>
+#include <memory>
+
+#include "commands.h"
+
+namespace springcheck {
+namespace {
+
+// Runs reports/make_report.py with the interpreter CMake found to have matplotlib: C++ writes
+// the tables, Python only draws them.
+int report(const std::string& results, const std::string& out) {
+  const std::string python = SPRINGCHECK_PYTHON;
+  if (python.empty()) {
+    std::cerr << "error: no python3 with matplotlib and numpy was found when springcheck was "
+                 "configured; install python3-matplotlib python3-numpy and re-run cmake\n";
+    return kFailure;
+  }
+  const pid_t child = fork();
+  if (child == 0) {
+    execl(python.c_str(), python.c_str(), SPRINGCHECK_REPORT_SCRIPT, "--results", results.c_str(),
+          "--out", out.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  if (child < 0 || waitpid(child, &status, 0) < 0) return kFailure;
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? kOk : kFailure;
+}
+
+}  // namespace
+
+void addReportCommand(CLI::App& app, int& exit_code) {
+  auto results = std::make_shared<std::string>("out");
+  auto out = std::make_shared<std::string>("out/report");
+  CLI::App* cmd = app.add_subcommand("report", "Draw report.pdf and PNGs from the result tables");
+  cmd->add_option("--results", *results, "Directory of result tables")->capture_default_str();
+  cmd->add_option("--out", *out, "Report directory")->capture_default_str();
+  cmd->callback([results, out, &exit_code] { exit_code = report(*results, *out); });
+}
+
+}  // namespace springcheck

@@ -32,6 +32,7 @@ class BackwardEuler final : public Integrator {
 
     x_ = s.y.head(n3);
     v_ = s.y.tail(n3);
+    f_.resize(n3);
     ps.force(s.t, x_, v_, f_);
 
     // Known velocity change of pinned particles.

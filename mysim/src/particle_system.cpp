@@ -5,8 +5,16 @@
 
 namespace mysim {
 
+namespace {
+// Below this many particles a force evaluation takes a few microseconds: starting threads would
+// cost more than it saves.
+constexpr int kParallelParticles = 2048;
+}  // namespace
+
 ParticleSystem::ParticleSystem(Model model, BlowUpLimits limits)
-    : model_(std::move(model)), limits_(limits) {
+    : model_(std::move(model)),
+      limits_(limits),
+      adjacency_(SpringAdjacency::build(model_.particleCount(), model_.springs)) {
   // The energy scale a healthy run stays within: what it starts with, plus all that gravity can
   // release over the scene's extent, plus work wind and driven pins can do at that scale.
   const Vector& x = model_.start_position;
@@ -50,31 +58,41 @@ Vec3 ParticleSystem::pinVelocity(double t) const {
   return model_.pin_motion ? model_.pin_motion->velocity(t) : Vec3::Zero();
 }
 
-void ParticleSystem::force(double t, const Vector& x, const Vector& v, Vector& f) const {
+void ParticleSystem::force(double t, Eigen::Ref<const Vector> x, Eigen::Ref<const Vector> v,
+                           Eigen::Ref<Vector> f) const {
   const int n = particleCount();
-  f.resize(3 * n);
-  for (int p = 0; p < n; ++p) at3(f, p) = model_.mass[p] * model_.gravity;
-  if (model_.drag != 0.0) f -= model_.drag * v;
-  if (model_.wind) {
-    for (int p = 0; p < n; ++p) at3(f, p) += windForce(*model_.wind, p, t);
-  }
-  for (const Spring& s : model_.springs) {
-    const Vec3 fi = springForce(at3(x, s.i), at3(x, s.j), at3(v, s.i), at3(v, s.j), s.rest_length,
-                                s.stiffness, s.damping);
-    at3(f, s.i) += fi;
-    at3(f, s.j) -= fi;
+  const double* xs = x.data();
+  const double* vs = v.data();
+  double* fs = f.data();
+  const SpringAdjacency& a = adjacency_;
+  const Vec3 gravity = model_.gravity;
+  const double drag = model_.drag;
+  const Wind* wind = model_.wind ? &*model_.wind : nullptr;
+#pragma omp parallel for schedule(static) if (n >= kParallelParticles)
+  for (int p = 0; p < n; ++p) {
+    const Eigen::Map<const Vec3> xp(xs + 3 * p), vp(vs + 3 * p);
+    Vec3 fp = model_.mass[p] * gravity - drag * vp;
+    if (wind) fp += windForce(*wind, p, t);
+    for (int e = a.offsets[p]; e < a.offsets[p + 1]; ++e) {
+      const int q = a.other[e];
+      const SpringAdjacency::Parameters& s = a.parameters[a.parameter[e]];
+      fp += springForce(xp, Eigen::Map<const Vec3>(xs + 3 * q), vp,
+                        Eigen::Map<const Vec3>(vs + 3 * q), s.rest_length, s.stiffness, s.damping);
+    }
+    Eigen::Map<Vec3>(fs + 3 * p) = fp;
   }
 }
 
-void ParticleSystem::acceleration(double t, const Vector& x, const Vector& v, Vector& a) const {
+void ParticleSystem::acceleration(double t, Eigen::Ref<const Vector> x,
+                                  Eigen::Ref<const Vector> v, Eigen::Ref<Vector> a) const {
   force(t, x, v, a);
   const Vec3 pin_acceleration =
       model_.pin_motion ? model_.pin_motion->acceleration(t) : Vec3::Zero();
   for (int p = 0; p < particleCount(); ++p) {
     if (model_.pinned[p]) {
-      at3(a, p) = pin_acceleration;
+      a.segment<3>(3 * p) = pin_acceleration;
     } else {
-      at3(a, p) /= model_.mass[p];
+      a.segment<3>(3 * p) /= model_.mass[p];
     }
   }
 }
@@ -82,16 +100,18 @@ void ParticleSystem::acceleration(double t, const Vector& x, const Vector& v, Ve
 void ParticleSystem::derivative(double t, const Vector& y, Vector& dydt) {
   const int n3 = 3 * particleCount();
   dydt.resize(2 * n3);
-  // Segments of y are copied into the scratch vectors: the force code indexes plain 3N arrays.
-  x_scratch_ = y.head(n3);
-  v_scratch_ = y.tail(n3);
-  acceleration(t, x_scratch_, v_scratch_, a_scratch_);
-  dydt.head(n3) = v_scratch_;
-  const Vec3 pin_velocity = pinVelocity(t);
-  for (int p = 0; p < particleCount(); ++p) {
-    if (model_.pinned[p]) at3(dydt, p) = pin_velocity;
+  acceleration(t, y.head(n3), y.tail(n3), dydt.tail(n3));
+  dydt.head(n3) = y.tail(n3);
+  if (model_.pin_motion) {
+    const Vec3 pin_velocity = pinVelocity(t);
+    for (int p = 0; p < particleCount(); ++p) {
+      if (model_.pinned[p]) dydt.segment<3>(3 * p) = pin_velocity;
+    }
+  } else {
+    for (int p = 0; p < particleCount(); ++p) {
+      if (model_.pinned[p]) dydt.segment<3>(3 * p).setZero();
+    }
   }
-  dydt.tail(n3) = a_scratch_;
 }
 
 void ParticleSystem::afterStepConst(State& state) const {
@@ -109,10 +129,10 @@ void ParticleSystem::afterStepConst(State& state) const {
 
 void ParticleSystem::afterStep(State& state) { afterStepConst(state); }
 
-double ParticleSystem::maxStrain(const Vector& x) const {
+double ParticleSystem::maxStrain(Eigen::Ref<const Vector> x) const {
   double worst = 0.0;
   for (const Spring& s : model_.springs) {
-    const double l = (at3(x, s.j) - at3(x, s.i)).norm();
+    const double l = (x.segment<3>(3 * s.j) - x.segment<3>(3 * s.i)).norm();
     worst = std::max(worst, std::abs(l / s.rest_length - 1.0));
   }
   return worst;
@@ -121,13 +141,12 @@ double ParticleSystem::maxStrain(const Vector& x) const {
 std::optional<OdeSystem::Unhealthy> ParticleSystem::checkHealth(const State& state) const {
   if (!state.y.allFinite()) return Unhealthy{"non-finite", "a position or velocity is NaN or inf"};
   const int n3 = 3 * particleCount();
-  const Vector x = state.y.head(n3);
-  const double strain = maxStrain(x);
+  const double strain = maxStrain(state.y.head(n3));
   if (strain > limits_.max_strain) {
     return Unhealthy{"strain", "max spring strain " + std::to_string(strain) + " > " +
                                    std::to_string(limits_.max_strain)};
   }
-  const EnergyTerms e = mechanicalEnergy(model_, x, state.y.tail(n3));
+  const EnergyTerms e = mechanicalEnergy(model_, state.y.head(n3), state.y.tail(n3));
   const double limit = limits_.max_energy_ratio * energy_scale_;
   if (e.kinetic > limit) {
     return Unhealthy{"energy", "kinetic energy " + std::to_string(e.kinetic) + " J > " +

@@ -14,6 +14,7 @@ class SymplecticEuler final : public Integrator {
     const int n3 = 3 * ps.particleCount();
     x_ = s.y.head(n3);
     v_ = s.y.tail(n3);
+    a_.resize(n3);
     ps.acceleration(s.t, x_, v_, a_);
     v_ += h * a_;
     // Pinned particles follow their prescribed velocity, integrated the same way.

@@ -18,6 +18,7 @@ class VelocityVerlet final : public Integrator {
     const int n3 = 3 * ps.particleCount();
     x_ = s.y.head(n3);
     v_ = s.y.tail(n3);
+    a_.resize(n3);
     ps.acceleration(s.t, x_, v_, a_);
     v_ += 0.5 * h * a_;
     x_ += h * v_;

@@ -4,6 +4,7 @@
 #include "mysim/blowup.h"
 #include "mysim/model.h"
 #include "mysim/ode_system.h"
+#include "mysim/spring_adjacency.h"
 
 namespace mysim {
 
@@ -27,16 +28,22 @@ class ParticleSystem final : public OdeSystem {
   State initialState() const;
 
   // Total force on every particle (3N), pinned rows included (they are ignored by the caller).
-  void force(double t, const Vector& x, const Vector& v, Vector& f) const;
-  // a = f / m for free particles, the prescribed acceleration for pinned ones.
-  void acceleration(double t, const Vector& x, const Vector& v, Vector& a) const;
+  // `f` must have size 3N. Gathered per particle from the spring adjacency, in parallel (OpenMP)
+  // when there are enough particles to pay for the threads; the result does not depend on the
+  // thread count.
+  void force(double t, Eigen::Ref<const Vector> x, Eigen::Ref<const Vector> v,
+             Eigen::Ref<Vector> f) const;
+  // a = f / m for free particles, the prescribed acceleration for pinned ones. `a`: size 3N.
+  void acceleration(double t, Eigen::Ref<const Vector> x, Eigen::Ref<const Vector> v,
+                    Eigen::Ref<Vector> a) const;
+  const SpringAdjacency& adjacency() const { return adjacency_; }
 
   // Position, velocity and acceleration a pinned particle must have at time t.
   Vec3 pinPosition(int particle, double t) const;
   Vec3 pinVelocity(double t) const;
 
   // Largest |l / rest - 1| over all springs.
-  double maxStrain(const Vector& x) const;
+  double maxStrain(Eigen::Ref<const Vector> x) const;
 
  private:
   void afterStepConst(State& state) const;
@@ -44,7 +51,7 @@ class ParticleSystem final : public OdeSystem {
   Model model_;
   BlowUpLimits limits_;
   double energy_scale_ = 0.0;  // J, see the constructor
-  Vector x_scratch_, v_scratch_, a_scratch_;  // (3N) derivative() workspace, allocated once
+  SpringAdjacency adjacency_;  // derived from model_.springs once
 };
 
 }  // namespace mysim

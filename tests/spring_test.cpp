@@ -70,3 +70,21 @@ TEST(SpringForce, HookeMagnitudeAndDampingAlongTheSpring) {
 
 }  // namespace
 }  // namespace mysim
+
+namespace mysim {
+namespace {
+
+TEST(SpringJacobian, ImplicitBlockEqualsHTimesDampingPlusHSquaredTimesDefiniteJacobian) {
+  const double h = 0.01;
+  for (double rest : {0.5, 2.0}) {  // stretched and compressed
+    const ImplicitSpringBlock b = implicitSpringBlock(xi, xj, rest, k, c, h);
+    const Mat3 J = springElasticJacobianDefinite(xi, xj, rest, k);
+    const Mat3 expected = h * springVelocityJacobian(xi, xj, c) + h * h * J;
+    EXPECT_LT((b.matrix() - expected).norm(), 1e-12 * expected.norm()) << rest;
+    const Vec3 w(0.3, -0.2, 0.9);
+    EXPECT_LT((b.timesJ(w) - J * w).norm(), 1e-12 * (J * w).norm()) << rest;
+  }
+}
+
+}  // namespace
+}  // namespace mysim

@@ -49,4 +49,12 @@ Mat3 springVelocityJacobian(const Vec3& xi, const Vec3& xj, double c) {
   return c * u * u.transpose();
 }
 
+ImplicitSpringBlock implicitSpringBlock(const Vec3& xi, const Vec3& xj, double rest, double k,
+                                        double c, double h) {
+  const Vec3 d = xj - xi;
+  const double l = d.norm();
+  const double a = std::max(0.0, 1.0 - rest / l);
+  return {h * h * k * a, h * c + h * h * k * (1.0 - a), k * a, k * (1.0 - a), d / l};
+}
+
 }  // namespace mysim

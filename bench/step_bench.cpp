@@ -1,0 +1,108 @@
+// One step of each integrator on the cloth, and the same scene and step in each Bullet engine,
+// side by side in one run (docs/performance.md turns them into mysim / Bullet ratios).
+#include <benchmark/benchmark.h>
+#include <omp.h>
+
+#include "bench_scenes.h"
+#include "mysim/particle_system.h"
+#include "reference/bullet_engine.h"
+
+namespace {
+
+const char* kIntegrators[] = {"euler", "trapezoidal", "rk4", "symplectic-euler", "verlet",
+                              "backward-euler", "dopri5"};
+
+// The cloth after 0.1 s of falling, so contacts of springs in tension are exercised.
+constexpr double kSettleTime = 0.1;
+
+void stepBenchmark(benchmark::State& state, const std::string& integrator, int n, int threads,
+                   double cg_tolerance) {
+  const double h = bench::stableStep(n);
+  mysim::Scene scene = bench::hangingCloth(n, integrator, h);
+  scene.integrator.cg_tolerance = cg_tolerance;
+  mysim::ParticleSystem system(mysim::buildModel(scene), scene.limits);
+  auto method = std::move(mysim::makeIntegrator(scene.integrator).value());
+  mysim::State s = system.initialState();
+  for (double t = 0; t < kSettleTime; t += h) method->step(system, s, h);
+  omp_set_num_threads(threads);
+  mysim::StepCounts counts;
+  for (auto _ : state) counts += method->step(system, s, h);
+  omp_set_num_threads(omp_get_num_procs());
+  state.counters["particles"] = system.particleCount();
+  state.counters["ns_per_particle"] = benchmark::Counter(
+      system.particleCount(), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["cg_iterations_per_step"] = double(counts.linear_iterations) / state.iterations();
+  state.counters["dt"] = h;
+}
+
+void bulletBenchmark(benchmark::State& state, reference::BulletEngine engine, int n,
+                     double cg_tolerance) {
+  const double h = bench::stableStep(n);
+  mysim::Scene scene = bench::hangingCloth(n, "symplectic-euler", h);
+  scene.integrator.cg_tolerance = cg_tolerance;
+  mysim::ParticleSystem system(mysim::buildModel(scene), scene.limits);
+  auto stepper = reference::makeBulletStepper(scene, system.model(), engine);
+  if (!stepper) {
+    state.SkipWithError(stepper.error().c_str());
+    return;
+  }
+  mysim::State s = system.initialState();
+  for (double t = 0; t < kSettleTime; t += h) (*stepper)->step(system, s, h);
+  for (auto _ : state) (*stepper)->step(system, s, h);
+  state.counters["particles"] = system.particleCount();
+  state.counters["ns_per_particle"] = benchmark::Counter(
+      system.particleCount(), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["dt"] = h;
+}
+
+// CG tolerance for both implicit solvers when compared (mysim's relative residual; Bullet gets
+// its square, see docs/reference.md).
+constexpr double kCgTolerance = 1e-4;
+
+void registerAll() {
+  for (const char* integrator : kIntegrators) {
+    benchmark::RegisterBenchmark(("BM_MysimStep/" + std::string(integrator) + "/32").c_str(),
+                                 [integrator](benchmark::State& st) {
+                                   stepBenchmark(st, integrator, 32, omp_get_num_procs(), kCgTolerance);
+                                 })
+        ->Unit(benchmark::kMicrosecond)->UseRealTime();
+  }
+  for (auto engine : {reference::BulletEngine::Deformable, reference::BulletEngine::Implicit,
+                      reference::BulletEngine::Classic}) {
+    benchmark::RegisterBenchmark(
+        ("BM_BulletStep/" + std::string(reference::bulletEngineName(engine)) + "/32").c_str(),
+        [engine](benchmark::State& st) { bulletBenchmark(st, engine, 32, kCgTolerance); })
+        ->Unit(benchmark::kMicrosecond)->UseRealTime();
+  }
+  // Cost per particle of the explicit steps from 32 x 32 to 256 x 256.
+  for (const char* integrator : {"symplectic-euler", "rk4"}) {
+    for (int n : {32, 64, 128, 256}) {
+      benchmark::RegisterBenchmark(
+          ("BM_MysimStepScaling/" + std::string(integrator) + "/" + std::to_string(n)).c_str(),
+          [integrator, n](benchmark::State& st) {
+            stepBenchmark(st, integrator, n, omp_get_num_procs(), kCgTolerance);
+          })
+          ->Unit(benchmark::kMicrosecond)->UseRealTime();
+    }
+  }
+  // Backward Euler: time and CG iterations per step against n.
+  for (int n : {16, 32, 64, 128}) {
+    benchmark::RegisterBenchmark(("BM_BackwardEulerScaling/" + std::to_string(n)).c_str(),
+                                 [n](benchmark::State& st) {
+                                   stepBenchmark(st, "backward-euler", n, omp_get_num_procs(), kCgTolerance);
+                                 })
+        ->Unit(benchmark::kMicrosecond)->UseRealTime();
+  }
+  // Threads: RK4 on 256 x 256 with one core and with all.
+  for (int threads : {1, 2}) {
+    benchmark::RegisterBenchmark(("BM_Rk4Threads/256/" + std::to_string(threads)).c_str(),
+                                 [threads](benchmark::State& st) {
+                                   stepBenchmark(st, "rk4", 256, threads, kCgTolerance);
+                                 })
+        ->Unit(benchmark::kMillisecond)->UseRealTime();
+  }
+}
+
+const bool registered = (registerAll(), true);
+
+}  // namespace

@@ -1,5 +1,7 @@
 #include "compare/run_output.h"
 
+#include <sys/resource.h>
+
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -13,6 +15,13 @@ namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+
+// The process's own high-water mark of resident memory (getrusage), bytes.
+long peakResidentBytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss * 1024L;
+}
 
 json energyJson(const mysim::EnergyTerms& e) {
   return {{"kinetic", e.kinetic}, {"gravity", e.gravity}, {"spring", e.spring}, {"total", e.total()}};
@@ -37,7 +46,8 @@ json summaryJson(const mysim::Scene& scene, const mysim::RunRecord& r) {
             {"particles", r.frames.empty() ? 0 : r.frames.front().rows()},
             {"frames", r.frames.size()},
             {"complete", !r.blowup.has_value()},
-            {"notes", r.notes}};
+            {"notes", r.notes},
+            {"peak_resident_bytes", peakResidentBytes()}};
   s["energy_start"] = r.energies.empty() ? json() : energyJson(r.energies.front());
   s["energy_end"] = r.energies.empty() ? json() : energyJson(r.energies.back());
   if (r.blowup) {

@@ -6,8 +6,9 @@
 namespace mysim {
 namespace {
 
-// Rows below which one thread is faster than two (a few microseconds of work per product).
-constexpr int kParallelRows = 6000;
+// Rows below which one thread is faster than two: a product over fewer rows is a few
+// microseconds, about what waking the second thread costs.
+constexpr int kParallelRows = 1024;
 constexpr int kChunk = 4096;  // dot products: partial sums over fixed chunks, added in order
 
 void multiply(const RowMajorMatrix& A, const Vector& x, Vector& y) {

@@ -1,5 +1,7 @@
 #include "mysim/particle_system.h"
 
+#include "mysim/vector_ops.h"
+
 #include <cmath>
 #include <string>
 
@@ -60,7 +62,19 @@ Vec3 ParticleSystem::pinVelocity(double t) const {
 
 void ParticleSystem::force(double t, Eigen::Ref<const Vector> x, Eigen::Ref<const Vector> v,
                            Eigen::Ref<Vector> f) const {
+  gather(t, x, v, f, false);
+}
+
+void ParticleSystem::acceleration(double t, Eigen::Ref<const Vector> x,
+                                  Eigen::Ref<const Vector> v, Eigen::Ref<Vector> a) const {
+  gather(t, x, v, a, true);
+}
+
+void ParticleSystem::gather(double t, Eigen::Ref<const Vector> x, Eigen::Ref<const Vector> v,
+                            Eigen::Ref<Vector> f, bool accelerations) const {
   const int n = particleCount();
+  const Vec3 pin_acceleration =
+      model_.pin_motion ? model_.pin_motion->acceleration(t) : Vec3::Zero();
   const double* xs = x.data();
   const double* vs = v.data();
   double* fs = f.data();
@@ -92,23 +106,19 @@ void ParticleSystem::force(double t, Eigen::Ref<const Vector> x, Eigen::Ref<cons
       fy += scale * dy;
       fz += scale * dz;
     }
+    if (accelerations) {
+      if (model_.pinned[p]) {
+        Eigen::Map<Vec3>(fs + 3 * p) = pin_acceleration;
+        continue;
+      }
+      const double inverse_mass = 1.0 / model_.mass[p];
+      fx *= inverse_mass;
+      fy *= inverse_mass;
+      fz *= inverse_mass;
+    }
     fs[3 * p] = fx;
     fs[3 * p + 1] = fy;
     fs[3 * p + 2] = fz;
-  }
-}
-
-void ParticleSystem::acceleration(double t, Eigen::Ref<const Vector> x,
-                                  Eigen::Ref<const Vector> v, Eigen::Ref<Vector> a) const {
-  force(t, x, v, a);
-  const Vec3 pin_acceleration =
-      model_.pin_motion ? model_.pin_motion->acceleration(t) : Vec3::Zero();
-  for (int p = 0; p < particleCount(); ++p) {
-    if (model_.pinned[p]) {
-      a.segment<3>(3 * p) = pin_acceleration;
-    } else {
-      a.segment<3>(3 * p) /= model_.mass[p];
-    }
   }
 }
 
@@ -116,7 +126,7 @@ void ParticleSystem::derivative(double t, const Vector& y, Vector& dydt) {
   const int n3 = 3 * particleCount();
   dydt.resize(2 * n3);
   acceleration(t, y.head(n3), y.tail(n3), dydt.tail(n3));
-  dydt.head(n3) = y.tail(n3);
+  copyParallel(y.tail(n3), dydt.head(n3));
   if (model_.pin_motion) {
     const Vec3 pin_velocity = pinVelocity(t);
     for (int p = 0; p < particleCount(); ++p) {

@@ -1,4 +1,5 @@
 #include "mysim/integrator.h"
+#include "mysim/vector_ops.h"
 
 namespace mysim {
 namespace {
@@ -10,13 +11,13 @@ class Rk4 final : public Integrator {
  public:
   StepCounts step(OdeSystem& system, State& s, double h) override {
     system.derivative(s.t, s.y, k1_);
-    trial_ = s.y + 0.5 * h * k1_;
+    addScaled(s.y, 0.5 * h, k1_, trial_);
     system.derivative(s.t + 0.5 * h, trial_, k2_);
-    trial_ = s.y + 0.5 * h * k2_;
+    addScaled(s.y, 0.5 * h, k2_, trial_);
     system.derivative(s.t + 0.5 * h, trial_, k3_);
-    trial_ = s.y + h * k3_;
+    addScaled(s.y, h, k3_, trial_);
     system.derivative(s.t + h, trial_, k4_);
-    s.y += (h / 6.0) * (k1_ + 2.0 * k2_ + 2.0 * k3_ + k4_);
+    addRk4Slopes(h, k1_, k2_, k3_, k4_, s.y);
     s.t += h;
     system.afterStep(s);
     return {.accepted = 1, .derivative_evaluations = 4};

@@ -16,7 +16,6 @@ SpringAdjacency SpringAdjacency::build(int particle_count, const std::vector<Spr
   const std::size_t total = 2 * springs.size();
   a.other.resize(total);
   a.parameter.resize(total);
-  a.spring.resize(total);
   std::map<std::tuple<double, double, double>, int> ids;
   std::vector<int> fill(a.offsets.begin(), a.offsets.end() - 1);
   for (int k = 0; k < static_cast<int>(springs.size()); ++k) {
@@ -28,7 +27,6 @@ SpringAdjacency SpringAdjacency::build(int particle_count, const std::vector<Spr
       const int e = fill[from]++;
       a.other[e] = to;
       a.parameter[e] = it->second;
-      a.spring[e] = k;
     }
   }
   return a;

@@ -47,6 +47,10 @@ class ParticleSystem final : public OdeSystem {
 
  private:
   void afterStepConst(State& state) const;
+  // The force loop; with `accelerations`, divided by mass (pinned: the prescribed acceleration)
+  // in the same pass.
+  void gather(double t, Eigen::Ref<const Vector> x, Eigen::Ref<const Vector> v,
+              Eigen::Ref<Vector> out, bool accelerations) const;
 
   Model model_;
   BlowUpLimits limits_;

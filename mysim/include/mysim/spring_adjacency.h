@@ -20,7 +20,6 @@ struct SpringAdjacency {
   std::vector<int> offsets;       // (N + 1) incidences of particle p: [offsets[p], offsets[p+1])
   std::vector<int> other;         // (2S) the particle at the far end
   std::vector<int> parameter;     // (2S) index into `parameters`
-  std::vector<int> spring;        // (2S) index of the spring in the model's list
   std::vector<Parameters> parameters;
 
   static SpringAdjacency build(int particle_count, const std::vector<Spring>& springs);

@@ -1,0 +1,79 @@
+#!/usr/bin/env python3
+"""Turns the benchmark JSON (medians of repeated runs) and the memory probe into the table of
+docs/performance.md: the figures, the mysim / Bullet ratios and each goal met or not. Reads
+numbers, computes ratios between them; no physics."""
+import json
+import sys
+
+
+def main(bench_json, memory_json, baseline_json, out_csv):
+    runs = {}
+    data = json.load(open(bench_json))
+    for b in data["benchmarks"]:
+        if b.get("aggregate_name", "median") != "median":
+            continue
+        name = b["run_name"] if "run_name" in b else b["name"]
+        runs[name.replace("/real_time", "").replace("/iterations:20", "")] = b
+    rows = []
+
+    def add(what, value, unit, goal=""):
+        rows.append((what, value, unit, goal))
+        print(f"{what:58s} {value:>12.4g} {unit:10s} {goal}")
+
+    ctx = data["context"]
+    print(f"machine: {ctx.get('host_name', '?')}, {ctx['num_cpus']} cpus @ {ctx['mhz_per_cpu']} MHz, "
+          f"caches {[c['size'] for c in ctx['caches']]}; {ctx['date']}")
+    bw = runs["BM_StreamTriad"]["bytes_per_second"]
+    add("memory bandwidth (STREAM triad, 2 threads)", bw / 1e9, "GB/s")
+    for n in (16, 32, 64, 128, 256):
+        r = runs[f"BM_ClothForce/{n}"]
+        add(f"force evaluation {n}x{n}: time per particle", r["ns_per_particle"], "ns")
+        add(f"force evaluation {n}x{n}: bytes moved per evaluation", r["bytes_per_eval"], "B")
+        goal = ("goal <= 2: " + ("met" if r["ratio_to_bound"] <= 2 else "missed")) if n == 128 else ""
+        add(f"force evaluation {n}x{n}: measured / bandwidth bound", r["ratio_to_bound"], "x", goal)
+    one = runs["BM_ClothForceOneThread/256"]["real_time"]
+    two = runs["BM_ClothForce/256"]["real_time"]
+    add("force evaluation 256x256: 2 threads over 1", one / two, "x")
+    for name in ("euler", "trapezoidal", "rk4", "symplectic-euler", "verlet", "backward-euler", "dopri5"):
+        add(f"mysim {name} step, 32x32", runs[f"BM_MysimStep/{name}/32"]["real_time"], "us")
+    for engine in ("bullet-deformable", "bullet-implicit", "bullet-classic"):
+        add(f"{engine} step, 32x32", runs[f"BM_BulletStep/{engine}/32"]["real_time"], "us")
+    se = runs["BM_MysimStep/symplectic-euler/32"]["real_time"]
+    de = runs["BM_BulletStep/bullet-deformable/32"]["real_time"]
+    ratio = de / se
+    add("bullet-deformable / mysim symplectic-euler per step", ratio, "x",
+        "goal >= 10: " + ("met" if ratio >= 10 else "missed"))
+    be = runs["BM_MysimStep/backward-euler/32"]["real_time"]
+    bi = runs["BM_BulletStep/bullet-implicit/32"]["real_time"]
+    ratio = bi / be
+    add("bullet-implicit / mysim backward-euler per step (CG tol 1e-4)", ratio, "x",
+        "goal >= 3: " + ("met" if ratio >= 3 else "missed"))
+    for integrator in ("symplectic-euler", "rk4"):
+        per = [runs[f"BM_MysimStepScaling/{integrator}/{n}"]["ns_per_particle"] * 1e9 for n in (32, 64, 128, 256)]
+        for n, p in zip((32, 64, 128, 256), per):
+            add(f"{integrator} step per particle, {n}x{n}", p, "ns")
+        spread = max(per) / min(per)
+        add(f"{integrator}: max/min time per particle, 32..256", spread, "x",
+            "goal < 1.5: " + ("met" if spread < 1.5 else "missed"))
+    for n in (16, 32, 64, 128):
+        r = runs[f"BM_BackwardEulerScaling/{n}"]
+        add(f"backward-euler step {n}x{n}", r["real_time"], "us")
+        add(f"backward-euler CG iterations per step {n}x{n}", r["cg_iterations_per_step"], "")
+    t1 = runs["BM_Rk4Threads/256/1"]["real_time"]
+    t2 = runs["BM_Rk4Threads/256/2"]["real_time"]
+    add("RK4 step 256x256: 1 thread over 2", t1 / t2, "x", "goal >= 1.6: " + ("met" if t1 / t2 >= 1.6 else "missed"))
+    mem = json.load(open(memory_json))
+    base = json.load(open(baseline_json))
+    total = mem["peak_resident_bytes"] / mem["particles"]
+    add("peak memory per particle, 256x256 RK4 (whole process)", total, "B",
+        "goal < 1024: " + ("met" if total < 1024 else "missed"))
+    add("  of which above the process baseline (a 1-particle run)",
+        (mem["peak_resident_bytes"] - base["peak_resident_bytes"]) / mem["particles"], "B")
+    with open(out_csv, "w") as f:
+        f.write("quantity,value,unit,goal\n")
+        for r in rows:
+            f.write(f"{r[0]},{r[1]},{r[2]},{r[3]}\n")
+
+
+if __name__ == "__main__":
+    main(*sys.argv[1:5])

@@ -5,7 +5,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(cmake g++ make pkg-config libbullet-dev libeigen3-dev googletest libgtest-dev
-          libbenchmark-dev nlohmann-json3-dev libcli11-dev python3-matplotlib python3-numpy)
+          libbenchmark-dev nlohmann-json3-dev libcli11-dev python3-matplotlib python3-numpy
+          libglfw3-dev libgl-dev libgl1-mesa-dri xvfb xauth)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

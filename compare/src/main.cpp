@@ -13,6 +13,9 @@ int main(int argc, char** argv) {
   springcheck::addSweepCommands(app, exit_code);
   springcheck::addStabilityCommand(app, exit_code);
   springcheck::addReportCommand(app, exit_code);
+#ifdef SPRINGCHECK_HAS_VIEWER
+  springcheck::addViewCommand(app, exit_code);
+#endif
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

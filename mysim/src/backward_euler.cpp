@@ -128,7 +128,7 @@ class BackwardEuler final : public Integrator {
     const SpringAdjacency& a = ps.adjacency();
     const int n = ps.particleCount();
     std::fill(matrix_.valuePtr(), matrix_.valuePtr() + matrix_.nonZeros(), 0.0);
-#pragma omp parallel for schedule(static) if (n >= 512)
+#pragma omp parallel for schedule(static) if (n >= 2048)
     for (int p = 0; p < n; ++p) {
       if (free_index_[p] < 0) continue;
       const Vec3 xp = x.segment<3>(3 * p), vp = v.segment<3>(3 * p);

@@ -1,0 +1,65 @@
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "commands.h"
+#include "viewer/window.h"
+
+namespace springcheck {
+namespace {
+
+struct ViewOptions {
+  std::string scene;
+  std::string engines = "mysim,bullet-deformable";
+  std::string integrator;
+  double dt = 0.0;
+  int frames = 0;
+  std::string screenshot;
+};
+
+int view(const ViewOptions& o) {
+  std::vector<std::string> engines;
+  std::stringstream list(o.engines);
+  for (std::string e; std::getline(list, e, ',');) {
+    if (!e.empty()) engines.push_back(e);
+  }
+  if (!o.screenshot.empty() && o.frames <= 0) {
+    std::cerr << "error: --screenshot needs --frames N\n";
+    return kBadInput;
+  }
+  // The scenes `t` cycles through: the seed's systems and the cloth on the sphere.
+  std::vector<std::string> scenes = {"scenes/seed/circle.json", "scenes/seed/pendulum.json",
+                                     "scenes/matched/chain_swing.json",
+                                     "scenes/matched/cloth_hanging.json",
+                                     "scenes/matched/cloth_on_sphere.json"};
+  if (!o.integrator.empty()) {
+    if (auto ok = mysim::canonicalIntegratorName(o.integrator); !ok) {
+      std::cerr << "error: --integrator: " << ok.error() << '\n';
+      return kBadInput;
+    }
+  }
+  viewer::ViewerSession session(scenes, o.scene, engines,
+                                o.integrator.empty() ? "" : *mysim::canonicalIntegratorName(o.integrator),
+                                o.dt);
+  if (!session.error().empty()) {
+    std::cerr << "error: " << session.error() << '\n';
+    return kBadInput;
+  }
+  return viewer::runWindow(session, {1280, 640, o.frames, o.screenshot});
+}
+
+}  // namespace
+
+void addViewCommand(CLI::App& app, int& exit_code) {
+  auto o = std::make_shared<ViewOptions>();
+  CLI::App* cmd = app.add_subcommand("view", "Watch a scene in mysim and Bullet side by side");
+  cmd->add_option("scene", o->scene, "Scene file to show first")->required();
+  cmd->add_option("--engines", o->engines, "Comma-separated engines, one viewport each")->capture_default_str();
+  cmd->add_option("--integrator", o->integrator, "mysim integrator (i cycles)");
+  cmd->add_option("--dt", o->dt, "Step in s (overrides the scenes)")->check(CLI::PositiveNumber);
+  cmd->add_option("--frames", o->frames, "Run this many frames without a person, then close");
+  cmd->add_option("--screenshot", o->screenshot, "With --frames: save the last frame as PNG");
+  cmd->callback([o, &exit_code] { exit_code = view(*o); });
+}
+
+}  // namespace springcheck

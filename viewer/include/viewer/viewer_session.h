@@ -1,0 +1,92 @@
+#pragma once
+// What the viewer shows and how keys change it, with no window: the window (window.cpp) and the
+// tests drive this same object, so every key is tested through the handler the window uses.
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mysim/integrator.h"
+#include "mysim/scene.h"
+
+namespace viewer {
+
+// One engine running the current scene: mysim with an integrator, or a Bullet stepper (also an
+// mysim::Integrator), over an OdeSystem that holds the state and the energy.
+struct EngineView {
+  std::string engine;
+  std::unique_ptr<mysim::OdeSystem> system;
+  std::unique_ptr<mysim::Integrator> integrator;
+  mysim::State state;
+  std::string refused;                     // why this engine cannot run the scene, if it cannot
+  std::optional<double> blowup_time;       // s
+  std::string blowup_check;
+  double step_seconds = 0.0;               // wall time of the last frame's stepping
+  bool running() const { return refused.empty() && !blowup_time; }
+};
+
+struct Camera {
+  double yaw = 0.6, pitch = 0.35;  // rad
+  double distance = 3.0;           // m, from the target
+  double target[3] = {0, 0, 0};
+};
+
+class ViewerSession {
+ public:
+  // `scenes`: the files `t` cycles through; `first` is shown first (added if not in the list).
+  ViewerSession(std::vector<std::string> scenes, const std::string& first,
+                std::vector<std::string> engines, const std::string& integrator, double dt);
+
+  // Keys as the original program had them, plus i, space and '.':
+  //   t next scene, d wind on/off, s swing on/off, w shaded cloth / springs, r reset,
+  //   i next integrator (mysim), ' ' pause / run, '.' one step while paused.
+  // Returns false for a key with no meaning.
+  bool handleKey(char key);
+
+  // Advances every running engine by whole steps towards `real_seconds` more of simulated time
+  // (real time), spending at most `budget_seconds` of wall time; if that is not enough the
+  // simulation runs slower than real time and `speed()` says how much.
+  void advance(double real_seconds, double budget_seconds = 0.03);
+  void stepOnce();
+  void reset();
+
+  const mysim::Scene& scene() const { return scene_; }
+  const std::string& sceneFile() const { return scenes_[scene_index_]; }
+  const std::vector<EngineView>& engines() const { return engines_; }
+  const std::string& integrator() const { return integrator_; }
+  double time() const { return time_; }
+  double dt() const { return dt_; }
+  bool paused() const { return paused_; }
+  bool shaded() const { return shaded_; }
+  bool wind() const { return wind_; }
+  bool swing() const { return swing_; }
+  double speed() const { return speed_; }  // simulated seconds per real second, last frame
+  Camera& camera() { return camera_; }
+  const std::string& error() const { return error_; }
+
+  // Current metrics: energy of each engine (J, if it has one), RMS node distance between the
+  // first two running engines (m), deepest node inside the sphere over engines (m).
+  std::optional<double> energy(const EngineView& e) const;
+  std::optional<double> engineDistance() const;
+  std::optional<double> penetration() const;
+
+ private:
+  void load();
+  void build();
+  void frameCamera();
+
+  std::vector<std::string> scenes_;
+  std::size_t scene_index_ = 0;
+  std::vector<std::string> engine_names_;
+  std::string integrator_;
+  double requested_dt_;
+  mysim::Scene file_scene_;  // as read from the file
+  mysim::Scene scene_;       // with the toggles and the integrator applied
+  std::vector<EngineView> engines_;
+  double dt_ = 0.0, time_ = 0.0, speed_ = 1.0, owed_ = 0.0;
+  bool paused_ = false, shaded_ = true, wind_ = false, swing_ = false;
+  Camera camera_;
+  std::string error_;
+};
+
+}  // namespace viewer

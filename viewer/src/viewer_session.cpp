@@ -1,0 +1,221 @@
+#include "viewer/viewer_session.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "mysim/particle_system.h"
+#include "mysim/scene_file.h"
+#include "mysim/sphere_collider.h"
+#include "reference/bullet_engine.h"
+
+namespace viewer {
+
+ViewerSession::ViewerSession(std::vector<std::string> scenes, const std::string& first,
+                             std::vector<std::string> engines, const std::string& integrator,
+                             double dt)
+    : scenes_(std::move(scenes)),
+      engine_names_(std::move(engines)),
+      integrator_(integrator),
+      requested_dt_(dt) {
+  auto it = std::find(scenes_.begin(), scenes_.end(), first);
+  if (it == scenes_.end()) it = scenes_.insert(scenes_.begin(), first);
+  scene_index_ = it - scenes_.begin();
+  load();
+}
+
+void ViewerSession::load() {
+  auto scene = mysim::loadScene(scenes_[scene_index_]);
+  error_.clear();
+  if (!scene) {
+    error_ = scene.error();
+    engines_.clear();
+    return;
+  }
+  file_scene_ = *scene;
+  if (integrator_.empty()) integrator_ = file_scene_.integrator.name;
+  build();
+  frameCamera();
+}
+
+void ViewerSession::build() {
+  scene_ = file_scene_;
+  // The circle takes first-order methods only: fall back to RK4 there.
+  auto info = std::find_if(mysim::integratorCatalog().begin(), mysim::integratorCatalog().end(),
+                           [&](const auto& i) { return i.name == integrator_; });
+  scene_.integrator.name = (scene_.kind == mysim::SystemKind::Circle && info->needs_particles)
+                               ? "rk4" : integrator_;
+  if (requested_dt_ > 0) scene_.dt = requested_dt_;
+  dt_ = scene_.dt;
+  if (wind_ && scene_.kind != mysim::SystemKind::Circle) {
+    // A gusting breeze along +z of about a quarter of a particle's weight, seeded.
+    const double mass = scene_.kind == mysim::SystemKind::Cloth ? scene_.cloth.particle_mass
+                                                                : scene_.chain.particle_mass;
+    scene_.wind = mysim::Wind{mysim::Vec3::UnitZ(), 0.25 * 9.8 * mass, 0.8, 0.1, 0.5, 42};
+  } else {
+    scene_.wind = file_scene_.wind;
+  }
+  if (swing_ && scene_.kind != mysim::SystemKind::Circle) {
+    scene_.pin_motion = mysim::PinMotion{mysim::Vec3::UnitZ(), 0.2, 0.5};  // the seed's swing
+  } else {
+    scene_.pin_motion = file_scene_.pin_motion;
+  }
+  engines_.clear();
+  for (const std::string& name : engine_names_) {
+    EngineView view;
+    view.engine = name;
+    if (name == "mysim") {
+      view.system = mysim::makeSystem(scene_);
+      view.integrator = std::move(mysim::makeIntegrator(scene_.integrator).value());
+      view.state = mysim::initialState(scene_, *view.system);
+    } else if (auto engine = reference::bulletEngineNamed(name)) {
+      if (scene_.kind == mysim::SystemKind::Circle) {
+        view.refused = "the circle is a first-order ODE, not a soft body";
+      } else {
+        auto system = std::make_unique<mysim::ParticleSystem>(mysim::buildModel(scene_), scene_.limits);
+        auto stepper = reference::makeBulletStepper(scene_, system->model(), *engine);
+        if (stepper) {
+          view.state = system->initialState();
+          view.integrator = std::move(*stepper);
+          view.system = std::move(system);
+        } else {
+          view.refused = stepper.error();
+        }
+      }
+    } else {
+      view.refused = "unknown engine";
+    }
+    engines_.push_back(std::move(view));
+  }
+  time_ = 0.0;
+  owed_ = 0.0;
+}
+
+void ViewerSession::frameCamera() {
+  if (engines_.empty() || !engines_[0].system) return;
+  const auto rows = engines_[0].system->particleRows(engines_[0].state);
+  const Eigen::Vector3d low = rows.leftCols<3>().colwise().minCoeff();
+  const Eigen::Vector3d high = rows.leftCols<3>().colwise().maxCoeff();
+  Eigen::Vector3d centre = 0.5 * (low + high);
+  double size = std::max((high - low).norm(), 0.5);
+  if (scene_.kind == mysim::SystemKind::Chain || scene_.kind == mysim::SystemKind::Cloth) {
+    // Things hang below their pins by about their own size: look a little lower.
+    centre.y() -= 0.4 * size;
+    size *= 1.4;
+  }
+  if (scene_.kind == mysim::SystemKind::Circle) size = 2.5;
+  for (int k = 0; k < 3; ++k) camera_.target[k] = centre[k];
+  camera_.distance = 1.6 * size;
+}
+
+void ViewerSession::stepOnce() {
+  for (EngineView& e : engines_) {
+    if (!e.running()) continue;
+    const auto start = std::chrono::steady_clock::now();
+    e.integrator->step(*e.system, e.state, dt_);
+    e.step_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (auto bad = e.system->checkHealth(e.state)) {
+      e.blowup_time = e.state.t;
+      e.blowup_check = bad->check;
+    }
+  }
+  time_ += dt_;
+}
+
+void ViewerSession::advance(double real_seconds, double budget_seconds) {
+  if (paused_) return;
+  for (EngineView& e : engines_) e.step_seconds = 0.0;
+  const auto start = std::chrono::steady_clock::now();
+  const double frame = std::min(real_seconds, 0.1);
+  owed_ += frame;  // simulated time owed to real time, carried over between frames
+  int steps = 0;
+  while (owed_ > (1.0 - 1e-9) * dt_) {  // round-off must not lose a step
+    stepOnce();
+    owed_ -= dt_;
+    ++steps;
+    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > budget_seconds) {
+      owed_ = 0.0;  // cannot keep up: run slower than real time instead of falling behind
+      break;
+    }
+  }
+  speed_ = frame > 0 && owed_ == 0.0 && steps * dt_ < frame ? steps * dt_ / frame : 1.0;
+}
+
+void ViewerSession::reset() { build(); }  // toggles and the pause state are kept
+
+bool ViewerSession::handleKey(char key) {
+  switch (key) {
+    case 't':
+      scene_index_ = (scene_index_ + 1) % scenes_.size();
+      load();
+      return true;
+    case 'd':
+      wind_ = !wind_;
+      build();
+      return true;
+    case 's':
+      swing_ = !swing_;
+      build();
+      return true;
+    case 'w':
+      shaded_ = !shaded_;
+      return true;
+    case 'r':
+      reset();
+      return true;
+    case 'i': {
+      const auto& catalog = mysim::integratorCatalog();
+      auto it = std::find_if(catalog.begin(), catalog.end(), [&](const auto& i) { return i.name == integrator_; });
+      std::size_t k = it == catalog.end() ? 0 : (it - catalog.begin() + 1) % catalog.size();
+      if (scene_.kind == mysim::SystemKind::Circle) {
+        while (catalog[k].needs_particles) k = (k + 1) % catalog.size();
+      }
+      integrator_ = catalog[k].name;
+      build();
+      return true;
+    }
+    case ' ':
+      paused_ = !paused_;
+      return true;
+    case '.':
+      if (paused_) stepOnce();
+      return true;
+    default:
+      return false;
+  }
+}
+
+std::optional<double> ViewerSession::energy(const EngineView& e) const {
+  if (!e.system) return std::nullopt;
+  auto terms = e.system->energy(e.state);
+  return terms ? std::optional(terms->total()) : std::nullopt;
+}
+
+std::optional<double> ViewerSession::engineDistance() const {
+  const EngineView* first = nullptr;
+  for (const EngineView& e : engines_) {
+    if (!e.system || e.blowup_time) continue;
+    if (!first) {
+      first = &e;
+      continue;
+    }
+    const auto a = first->system->particleRows(first->state);
+    const auto b = e.system->particleRows(e.state);
+    if (a.rows() != b.rows()) return std::nullopt;
+    return std::sqrt((a.leftCols<3>() - b.leftCols<3>()).rowwise().squaredNorm().mean());
+  }
+  return std::nullopt;
+}
+
+std::optional<double> ViewerSession::penetration() const {
+  if (!scene_.sphere) return std::nullopt;
+  double deepest = 0.0;
+  for (const EngineView& e : engines_) {
+    if (!e.system) continue;
+    const int n = static_cast<int>(e.state.y.size() / 6);
+    deepest = std::max(deepest, mysim::deepestPenetration(*scene_.sphere, e.state.y.head(3 * n)));
+  }
+  return deepest;
+}
+
+}  // namespace viewer

@@ -1,4 +1,3 @@
-#include <Eigen/SparseCore>
 #include <algorithm>
 #include <vector>
 
@@ -9,6 +8,9 @@
 namespace mysim {
 namespace {
 
+// Below this many particles one thread is faster (see particle_system.cpp).
+constexpr int kParallelParticles = 2048;
+
 // Backward Euler as in Baraff and Witkin, "Large steps in cloth simulation" (SIGGRAPH 1998),
 // eq. 16: one Newton step of v1 = v0 + h M^-1 f(x0 + h v1, v1), linearised at (x0, v0):
 //   (M - h df/dv - h^2 df/dx) dv = h (f0 + h df/dx v0),   v1 = v0 + dv,   x1 = x0 + h v1.
@@ -18,10 +20,12 @@ namespace {
 // the right-hand side. First order; unconditionally stable on an oscillator, where the amplitude
 // shrinks by 1/sqrt(1 + (h w)^2) a step.
 //
-// The matrix has a fixed pattern (3x3 blocks: a particle and its free neighbours), built once as
-// a row-major CSR matrix; each step refills its values in place, row by row, gathered per
-// particle from the spring adjacency like the forces (so in parallel, with no write conflicts).
-// CG (conjugate_gradient.h) starts from the previous step's dv.
+// The matrix is never assembled. Each spring's block is alpha I + beta u u^T
+// (implicitSpringBlock), so a step stores per incidence (alpha, beta, u) and per free particle its
+// 3x3 diagonal block; the product gathers, per particle,
+//   (A x)_p = D_p x_p - sum over free neighbours q of (alpha x_q + beta u (u . x_q)),
+// in parallel with no write conflicts. That is 5 numbers an incidence instead of a CSR matrix's
+// 9 values and 9 column indices, and nothing to scatter or zero.
 class BackwardEuler final : public Integrator {
  public:
   BackwardEuler(double tolerance, int max_iterations)
@@ -32,7 +36,7 @@ class BackwardEuler final : public Integrator {
     ParticleSystem& ps = *system.particles();
     const Model& model = ps.model();
     const int n = ps.particleCount(), n3 = 3 * n;
-    if (free_index_.empty()) buildPattern(ps);
+    if (free_index_.empty()) numberFreeParticles(ps);
 
     const auto x = s.y.head(n3);
     const auto v = s.y.tail(n3);
@@ -47,7 +51,9 @@ class BackwardEuler final : public Integrator {
     }
     fill(ps, x, v, h);
 
-    const CgResult cg = conjugateGradient(matrix_, rhs_, dv_free_, tolerance_, max_iterations_);
+    const CgResult cg = conjugateGradient(
+        [this, &ps](const Vector& in, Vector& out) { multiply(ps, in, out); }, inverse_diagonal_,
+        rhs_, dv_free_, tolerance_, max_iterations_);
     StepCounts counts{.accepted = 1, .derivative_evaluations = 1};
     counts.linear_iterations = cg.iterations;
     if (!cg.converged) counts.solver_failures = 1;
@@ -64,73 +70,33 @@ class BackwardEuler final : public Integrator {
   }
 
  private:
-  // Numbers the free particles and lays out the matrix: for free particle p, the block columns
-  // are p and its free neighbours, sorted; every block is dense 3x3.
-  void buildPattern(const ParticleSystem& ps) {
-    const Model& model = ps.model();
-    const SpringAdjacency& a = ps.adjacency();
+  void numberFreeParticles(const ParticleSystem& ps) {
     const int n = ps.particleCount();
     free_index_.assign(n, -1);
-    int free_count = 0;
+    free_particles_.clear();
     for (int p = 0; p < n; ++p) {
-      if (!model.pinned[p]) free_index_[p] = free_count++;
-    }
-    // Per incidence, the block column slot in its row (or -1 for a pinned neighbour); per
-    // particle, its diagonal slot.
-    incidence_slot_.assign(a.other.size(), -1);
-    diagonal_slot_.assign(n, -1);
-    std::vector<Eigen::Triplet<double>> pattern;
-    for (int p = 0; p < n; ++p) {
-      if (free_index_[p] < 0) continue;
-      std::vector<int> columns = {p};
-      for (int e = a.offsets[p]; e < a.offsets[p + 1]; ++e) {
-        if (free_index_[a.other[e]] >= 0) columns.push_back(a.other[e]);
-      }
-      std::sort(columns.begin(), columns.end());
-      columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
-      auto slot = [&](int q) {
-        return static_cast<int>(std::lower_bound(columns.begin(), columns.end(), q) - columns.begin());
-      };
-      diagonal_slot_[p] = slot(p);
-      for (int e = a.offsets[p]; e < a.offsets[p + 1]; ++e) {
-        if (free_index_[a.other[e]] >= 0) incidence_slot_[e] = slot(a.other[e]);
-      }
-      for (int q : columns) {
-        for (int r = 0; r < 3; ++r) {
-          for (int c = 0; c < 3; ++c) {
-            pattern.emplace_back(3 * free_index_[p] + r, 3 * free_index_[q] + c, 0.0);
-          }
-        }
+      if (!ps.model().pinned[p]) {
+        free_index_[p] = static_cast<int>(free_particles_.size());
+        free_particles_.push_back(p);
       }
     }
-    matrix_.resize(3 * free_count, 3 * free_count);
-    matrix_.setFromTriplets(pattern.begin(), pattern.end());
-    matrix_.makeCompressed();
-    rhs_.setZero(3 * free_count);
-    dv_free_.setZero(3 * free_count);
+    const int unknowns = 3 * static_cast<int>(free_particles_.size());
+    blocks_.resize(ps.adjacency().other.size());
+    diagonal_.resize(free_particles_.size());
+    rhs_.setZero(unknowns);
+    dv_free_.setZero(unknowns);
+    inverse_diagonal_.setZero(unknowns);
   }
 
-  // Adds a 3x3 block at (row particle p, block slot) of the CSR values.
-  void addBlock(int p, int slot, const Mat3& block) {
-    double* values = matrix_.valuePtr();
-    const int* starts = matrix_.outerIndexPtr();
-    const int row = 3 * free_index_[p];
-    for (int r = 0; r < 3; ++r) {
-      double* entry = values + starts[row + r] + 3 * slot;
-      for (int c = 0; c < 3; ++c) entry[c] += block(r, c);
-    }
-  }
-
-  // Matrix values and right-hand side for this step, one free particle (three rows) at a time.
+  // Per-incidence blocks, diagonal blocks and the right-hand side for this step.
   void fill(const ParticleSystem& ps, const Eigen::Ref<const Vector>& x,
             const Eigen::Ref<const Vector>& v, double h) {
     const Model& model = ps.model();
     const SpringAdjacency& a = ps.adjacency();
-    const int n = ps.particleCount();
-    std::fill(matrix_.valuePtr(), matrix_.valuePtr() + matrix_.nonZeros(), 0.0);
-#pragma omp parallel for schedule(static) if (n >= 2048)
-    for (int p = 0; p < n; ++p) {
-      if (free_index_[p] < 0) continue;
+    const int free_count = static_cast<int>(free_particles_.size());
+#pragma omp parallel for schedule(static) if (free_count >= kParallelParticles)
+    for (int i = 0; i < free_count; ++i) {
+      const int p = free_particles_[i];
       const Vec3 xp = x.segment<3>(3 * p), vp = v.segment<3>(3 * p);
       Mat3 diagonal = (model.mass[p] + h * model.drag) * Mat3::Identity();
       // h f0, plus h^2 (df/dx v0)_p = h^2 sum J (v_q - v_p) over p's springs.
@@ -138,27 +104,58 @@ class BackwardEuler final : public Integrator {
       for (int e = a.offsets[p]; e < a.offsets[p + 1]; ++e) {
         const int q = a.other[e];
         const SpringAdjacency::Parameters& sp = a.parameters[a.parameter[e]];
-        const ImplicitSpringBlock b = implicitSpringBlock(xp, x.segment<3>(3 * q), sp.rest_length,
-                                                          sp.stiffness, sp.damping, h);
-        const Mat3 block = b.matrix();
-        rhs += h * h * b.timesJ(v.segment<3>(3 * q) - vp);
-        diagonal += block;
-        if (incidence_slot_[e] >= 0) {
-          addBlock(p, incidence_slot_[e], -block);
-        } else {
-          rhs += block * dv_known_.segment<3>(3 * q);  // -(-block) times the pinned dv
+        // implicitSpringBlock() (tested against the Mat3 Jacobians), inlined here.
+        const Vec3 d = x.segment<3>(3 * q) - xp;
+        const double inv_l = 1.0 / d.norm();
+        const Vec3 u = d * inv_l;
+        const double clamp = std::max(0.0, 1.0 - sp.rest_length * inv_l);
+        ImplicitSpringBlock& b = blocks_[e];
+        b.alpha = h * h * sp.stiffness * clamp;
+        b.beta = h * sp.damping + h * h * sp.stiffness * (1.0 - clamp);
+        b.ja = sp.stiffness * clamp;
+        b.jb = sp.stiffness * (1.0 - clamp);
+        b.u = u;
+        const Vec3 w = v.segment<3>(3 * q) - vp;
+        rhs += (h * h) * (b.ja * w + (b.jb * u.dot(w)) * u);
+        diagonal.diagonal().array() += b.alpha;
+        diagonal.noalias() += b.beta * (u * u.transpose());
+        // A pinned neighbour's column times its known dv moves to the right: -(-block) dv_q.
+        if (free_index_[q] < 0) {
+          const Vec3 dq = dv_known_.segment<3>(3 * q);
+          rhs += b.alpha * dq + (b.beta * u.dot(dq)) * u;
         }
       }
-      addBlock(p, diagonal_slot_[p], diagonal);
-      rhs_.segment<3>(3 * free_index_[p]) = rhs;
+      diagonal_[i] = diagonal;
+      rhs_.segment<3>(3 * i) = rhs;
+      inverse_diagonal_.segment<3>(3 * i) = diagonal.diagonal().cwiseInverse();
     }
   }
 
-  std::vector<int> free_index_;      // (N) block row of each free particle, -1 if pinned
-  std::vector<int> incidence_slot_;  // (2S) block column slot of each incidence, -1 if pinned
-  std::vector<int> diagonal_slot_;   // (N)
-  Vector f_, dv_known_, rhs_, dv_free_;
-  RowMajorMatrix matrix_;
+  // out = A in, over the free particles.
+  void multiply(const ParticleSystem& ps, const Vector& in, Vector& out) const {
+    const SpringAdjacency& a = ps.adjacency();
+    const int free_count = static_cast<int>(free_particles_.size());
+    out.resize(in.size());
+#pragma omp parallel for schedule(static) if (free_count >= kParallelParticles)
+    for (int i = 0; i < free_count; ++i) {
+      const int p = free_particles_[i];
+      Vec3 sum = diagonal_[i] * in.segment<3>(3 * i);
+      for (int e = a.offsets[p]; e < a.offsets[p + 1]; ++e) {
+        const int j = free_index_[a.other[e]];
+        if (j < 0) continue;
+        const ImplicitSpringBlock& b = blocks_[e];
+        const Vec3 xq = in.segment<3>(3 * j);
+        sum -= b.alpha * xq + (b.beta * b.u.dot(xq)) * b.u;
+      }
+      out.segment<3>(3 * i) = sum;
+    }
+  }
+
+  std::vector<int> free_index_;      // (N) row block of each free particle, -1 if pinned
+  std::vector<int> free_particles_;  // (F) particle of each row block
+  std::vector<ImplicitSpringBlock> blocks_;  // (2S) this step's block of each incidence
+  std::vector<Mat3> diagonal_;               // (F) diagonal blocks
+  Vector f_, dv_known_, rhs_, dv_free_, inverse_diagonal_;
   double tolerance_;
   int max_iterations_;
 };

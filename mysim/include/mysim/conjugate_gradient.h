@@ -1,25 +1,26 @@
 #pragma once
-#include <Eigen/SparseCore>
+#include <functional>
 
 #include "mysim/types.h"
 
 namespace mysim {
-
-using RowMajorMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
 struct CgResult {
   int iterations = 0;
   bool converged = false;
 };
 
-// Jacobi-preconditioned conjugate gradient for a symmetric positive definite A (both triangles
-// stored), from the starting guess in x; stops when |b - A x| <= tolerance |b|.
-//
-// Written here rather than taken from Eigen so that (1) the matrix-vector product runs on all
-// cores only when the system is large enough to pay for it (Eigen's OpenMP product spun its
-// threads for most of a small cloth's step), and (2) dot products are summed in fixed chunks in a
-// fixed order, so the result does not depend on the number of threads.
-CgResult conjugateGradient(const RowMajorMatrix& A, const Vector& b, Vector& x, double tolerance,
-                           int max_iterations);
+// y = A x for a symmetric positive definite A, given as a function so that A need not be
+// assembled (backward Euler applies its per-spring blocks directly).
+using LinearOperator = std::function<void(const Vector& x, Vector& y)>;
+
+// Jacobi-preconditioned conjugate gradient from the starting guess in x; stops when
+// |b - A x| <= tolerance |b|. Dot products are summed in fixed chunks in a fixed order, so the
+// result does not depend on the number of threads.
+CgResult conjugateGradient(const LinearOperator& A, const Vector& inverse_diagonal, const Vector& b,
+                           Vector& x, double tolerance, int max_iterations);
+
+// Summed in fixed chunks (in parallel for long vectors), added in order.
+double deterministicDot(const Vector& a, const Vector& b);
 
 }  // namespace mysim

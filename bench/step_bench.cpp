@@ -75,7 +75,7 @@ void registerAll() {
         ->Unit(benchmark::kMicrosecond)->UseRealTime();
   }
   // Cost per particle of the explicit steps from 32 x 32 to 256 x 256, on one thread: the
-  // algorithm's scaling, without the step where the force loop turns parallel (2048 particles).
+  // algorithm's scaling, without the step where the force loop turns parallel (512 particles).
   for (const char* integrator : {"symplectic-euler", "rk4"}) {
     for (int n : {32, 64, 128, 256}) {
       benchmark::RegisterBenchmark(

@@ -11,6 +11,7 @@ fastest row under an error bound, which is a lookup, not physics). Inputs, under
   energy/<scene>/series.csv          springcheck compare, one engine per integrator
   suite/cloth_hanging/...            springcheck suite (final_state.csv, final.obj, node_distance.csv, series.csv)
   suite/cloth_on_sphere/series.csv
+  bench/bench.json                   scripts/run-bench.sh (optional: adds a performance page)
 
 Run with the interpreter that has matplotlib (CMake finds it; `springcheck report` uses it).
 """
@@ -291,6 +292,42 @@ def figure_sag_penetration(results):
     return fig
 
 
+def figure_performance(bench_json):
+    """Per-step cost of every integrator and Bullet engine, and force evaluation against size."""
+    data = json.load(open(bench_json))
+    median = {}
+    for b in data["benchmarks"]:
+        if b.get("aggregate_name", "median") == "median":
+            median[b.get("run_name", b["name"]).replace("/real_time", "")] = b
+    fig, axes = plt.subplots(1, 2, figsize=(12, 5))
+    names, times, colours = [], [], []
+    for key, b in median.items():
+        if key.startswith("BM_MysimStep/") or key.startswith("BM_BulletStep/"):
+            names.append(key.split("/")[1])
+            times.append(b["real_time"])
+            colours.append("tab:blue" if key.startswith("BM_MysimStep/") else "tab:orange")
+    axes[0].barh(names, times, color=colours)
+    axes[0].set_xscale("log")
+    axes[0].set_xlabel("time per step, 32 x 32 cloth [us] (blue: mysim, orange: Bullet)")
+    axes[0].set_title("one step, same scene and dt")
+    axes[0].grid(True, axis="x", which="both", alpha=0.3)
+    sizes, per = [], []
+    for key, b in median.items():
+        if key.startswith("BM_ClothForce/"):
+            sizes.append(int(key.split("/")[1]) ** 2)
+            per.append(b["ns_per_particle"])
+    axes[1].loglog(sizes, per, "o-", label="measured (all cores)")
+    bound = [b["bound_ns"] / n for n, b in zip(sizes, (median[f"BM_ClothForce/{int(math.sqrt(n))}"] for n in sizes))]
+    axes[1].loglog(sizes, bound, "--", label="memory-bandwidth bound")
+    axes[1].set_xlabel("particles")
+    axes[1].set_ylabel("force evaluation per particle [ns]")
+    axes[1].set_title("cloth force evaluation against the roofline")
+    axes[1].grid(True, which="both", alpha=0.3)
+    axes[1].legend(fontsize=8)
+    fig.tight_layout()
+    return fig
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--results", default="out", help="directory holding the result tables")
@@ -316,6 +353,9 @@ def main():
         ("06_drape", figure_drape(args.results)),
         ("07_sag_penetration", figure_sag_penetration(args.results)),
     ]
+    bench_json = os.path.join(args.results, "bench", "bench.json")
+    if os.path.exists(bench_json):  # scripts/run-bench.sh was run: add its page
+        figures.append(("08_performance", figure_performance(bench_json)))
     pdf_path = os.path.join(args.out, "report.pdf")
     with PdfPages(pdf_path) as pdf:
         for name, fig in figures:

@@ -10,7 +10,7 @@ namespace mysim {
 namespace {
 // Below this many particles a force evaluation takes a few microseconds: starting threads would
 // cost more than it saves.
-constexpr int kParallelParticles = 2048;
+constexpr int kParallelParticles = 512;
 }  // namespace
 
 ParticleSystem::ParticleSystem(Model model, BlowUpLimits limits)

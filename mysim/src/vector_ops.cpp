@@ -2,8 +2,8 @@
 
 namespace mysim {
 namespace {
-// Entries below which one thread is faster (about 2000 cloth particles' state).
-constexpr long kParallelEntries = 12000;
+// Entries below which one thread is faster (512 particles: 3072 state entries).
+constexpr long kParallelEntries = 3072;
 }  // namespace
 
 void addScaled(const Vector& y, double s, const Vector& k, Vector& out) {

@@ -88,11 +88,7 @@ class ClassicStepper final : public BulletStepper {
         body_->addForce(toBt(mysim::windForce(*wind_, p, state.t)), p);
       }
     }
-    drivePins(*body_, particles, state.t, h);
-    world_->stepSimulation(h, 0);
-    state.t += h;
-    placePins(*body_, particles, state.t);
-    readNodes(*body_, state);
+    stepWorld(*world_, *body_, particles, state, h);
     return {.accepted = 1};
   }
 

@@ -104,11 +104,7 @@ class DeformableStepper final : public BulletStepper {
   mysim::StepCounts step(mysim::OdeSystem& system, mysim::State& state, double h) override {
     const mysim::ParticleSystem& particles = *system.particles();
     time_ = state.t;
-    drivePins(*body_, particles, state.t, h);
-    world_->stepSimulation(h, 0);
-    state.t += h;
-    placePins(*body_, particles, state.t);
-    readNodes(*body_, state);
+    stepWorld(*world_, *body_, particles, state, h);
     return {.accepted = 1};
   }
 

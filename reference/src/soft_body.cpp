@@ -51,6 +51,15 @@ void placePins(btSoftBody& body, const mysim::ParticleSystem& system, double t) 
   }
 }
 
+void stepWorld(btDiscreteDynamicsWorld& world, btSoftBody& body,
+               const mysim::ParticleSystem& system, mysim::State& state, double h) {
+  drivePins(body, system, state.t, h);
+  world.stepSimulation(h, 0);
+  state.t += h;
+  placePins(body, system, state.t);
+  readNodes(body, state);
+}
+
 void readNodes(const btSoftBody& body, mysim::State& state) {
   const int n = body.m_nodes.size();
   state.y.resize(6 * n);

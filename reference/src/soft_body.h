@@ -1,4 +1,5 @@
 #pragma once
+#include <BulletDynamics/Dynamics/btDiscreteDynamicsWorld.h>
 #include <BulletSoftBody/btSoftBody.h>
 
 #include <functional>
@@ -24,5 +25,10 @@ void placePins(btSoftBody& body, const mysim::ParticleSystem& system, double t);
 
 // Copies node positions and velocities into y = [x; v].
 void readNodes(const btSoftBody& body, mysim::State& state);
+
+// One scene step of a Bullet world: pins driven to land on x(t + h), exactly one
+// stepSimulation(h, 0), pins placed exactly, node state copied into `state`.
+void stepWorld(btDiscreteDynamicsWorld& world, btSoftBody& body,
+               const mysim::ParticleSystem& system, mysim::State& state, double h);
 
 }  // namespace reference

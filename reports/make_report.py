@@ -308,6 +308,7 @@ def figure_performance(bench_json):
             colours.append("tab:blue" if key.startswith("BM_MysimStep/") else "tab:orange")
     axes[0].barh(names, times, color=colours)
     axes[0].set_xscale("log")
+    axes[0].set_xlim(left=1)
     axes[0].set_xlabel("time per step, 32 x 32 cloth [us] (blue: mysim, orange: Bullet)")
     axes[0].set_title("one step, same scene and dt")
     axes[0].grid(True, axis="x", which="both", alpha=0.3)

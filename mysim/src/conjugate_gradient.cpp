@@ -1,5 +1,6 @@
 #include "mysim/conjugate_gradient.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -30,8 +31,17 @@ CgResult conjugateGradient(const LinearOperator& A, const Vector& inverse_diagon
   A(x, Ap);
   r = b - Ap;
   const double b_norm = std::sqrt(deterministicDot(b, b));
-  const double threshold = tolerance * (b_norm > 0.0 ? b_norm : 1.0);
   CgResult result;
+  if (b_norm == 0.0) {  // A x = 0: x = 0
+    x.setZero();
+    result.converged = true;
+    return result;
+  }
+  // A floor far below any physical velocity change: a system decaying towards rest reaches
+  // subnormal numbers, where |b| tolerance underflows to 0 and no residual could ever meet it
+  // (measured: a damped oscillator under backward Euler at h w = 2.7 then ran CG to its limit
+  // and produced NaN).
+  const double threshold = std::max(tolerance * b_norm, 1e-150);
   if (std::sqrt(deterministicDot(r, r)) <= threshold) {
     result.converged = true;
     return result;
@@ -41,7 +51,9 @@ CgResult conjugateGradient(const LinearOperator& A, const Vector& inverse_diagon
   double rz = deterministicDot(r, z);
   for (int k = 1; k <= max_iterations; ++k) {
     A(p, Ap);
-    const double alpha = rz / deterministicDot(p, Ap);
+    const double pAp = deterministicDot(p, Ap);
+    if (!(pAp > 0.0)) return result;  // breakdown (not positive definite, or no progress left)
+    const double alpha = rz / pAp;
     x += alpha * p;
     r -= alpha * Ap;
     result.iterations = k;

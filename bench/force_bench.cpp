@@ -51,7 +51,11 @@ void forceBenchmark(benchmark::State& state, int threads) {
 void BM_ClothForce(benchmark::State& state) { forceBenchmark(state, omp_get_num_procs()); }
 void BM_ClothForceOneThread(benchmark::State& state) { forceBenchmark(state, 1); }
 
-BENCHMARK(BM_ClothForce)->RangeMultiplier(2)->Range(16, 256)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(BM_ClothForce)
+    ->RangeMultiplier(2)
+    ->Range(16, 256)
+    ->Unit(benchmark::kMicrosecond)
+    ->UseRealTime();
 BENCHMARK(BM_ClothForceOneThread)->Arg(128)->Arg(256)->Unit(benchmark::kMicrosecond)->UseRealTime();
 
 }  // namespace

@@ -9,8 +9,8 @@
 
 namespace {
 
-const char* kIntegrators[] = {"euler", "trapezoidal", "rk4", "symplectic-euler", "verlet",
-                              "backward-euler", "dopri5"};
+const char* kIntegrators[] = {"euler",  "trapezoidal",    "rk4",   "symplectic-euler",
+                              "verlet", "backward-euler", "dopri5"};
 
 // The cloth after 0.1 s of falling, so contacts of springs in tension are exercised.
 constexpr double kSettleTime = 0.1;
@@ -29,8 +29,9 @@ void stepBenchmark(benchmark::State& state, const std::string& integrator, int n
   for (auto _ : state) counts += method->step(system, s, h);
   omp_set_num_threads(omp_get_num_procs());
   state.counters["particles"] = system.particleCount();
-  state.counters["ns_per_particle"] = benchmark::Counter(
-      system.particleCount(), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["ns_per_particle"] =
+      benchmark::Counter(system.particleCount(), benchmark::Counter::kIsIterationInvariantRate |
+                                                     benchmark::Counter::kInvert);
   state.counters["cg_iterations_per_step"] = double(counts.linear_iterations) / state.iterations();
   state.counters["dt"] = h;
 }
@@ -50,8 +51,9 @@ void bulletBenchmark(benchmark::State& state, reference::BulletEngine engine, in
   for (double t = 0; t < kSettleTime; t += h) (*stepper)->step(system, s, h);
   for (auto _ : state) (*stepper)->step(system, s, h);
   state.counters["particles"] = system.particleCount();
-  state.counters["ns_per_particle"] = benchmark::Counter(
-      system.particleCount(), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["ns_per_particle"] =
+      benchmark::Counter(system.particleCount(), benchmark::Counter::kIsIterationInvariantRate |
+                                                     benchmark::Counter::kInvert);
   state.counters["dt"] = h;
 }
 
@@ -63,16 +65,19 @@ void registerAll() {
   for (const char* integrator : kIntegrators) {
     benchmark::RegisterBenchmark(("BM_MysimStep/" + std::string(integrator) + "/32").c_str(),
                                  [integrator](benchmark::State& st) {
-                                   stepBenchmark(st, integrator, 32, omp_get_num_procs(), kCgTolerance);
+                                   stepBenchmark(st, integrator, 32, omp_get_num_procs(),
+                                                 kCgTolerance);
                                  })
-        ->Unit(benchmark::kMicrosecond)->UseRealTime();
+        ->Unit(benchmark::kMicrosecond)
+        ->UseRealTime();
   }
   for (auto engine : {reference::BulletEngine::Deformable, reference::BulletEngine::Implicit,
                       reference::BulletEngine::Classic}) {
     benchmark::RegisterBenchmark(
         ("BM_BulletStep/" + std::string(reference::bulletEngineName(engine)) + "/32").c_str(),
         [engine](benchmark::State& st) { bulletBenchmark(st, engine, 32, kCgTolerance); })
-        ->Unit(benchmark::kMicrosecond)->UseRealTime();
+        ->Unit(benchmark::kMicrosecond)
+        ->UseRealTime();
   }
   // Cost per particle of the explicit steps from 32 x 32 to 256 x 256, on one thread: the
   // algorithm's scaling, without the step where the force loop turns parallel (512 particles).
@@ -83,24 +88,27 @@ void registerAll() {
           [integrator, n](benchmark::State& st) {
             stepBenchmark(st, integrator, n, 1, kCgTolerance);
           })
-          ->Unit(benchmark::kMicrosecond)->UseRealTime();
+          ->Unit(benchmark::kMicrosecond)
+          ->UseRealTime();
     }
   }
   // Backward Euler: time and CG iterations per step against n.
   for (int n : {16, 32, 64, 128}) {
     benchmark::RegisterBenchmark(("BM_BackwardEulerScaling/" + std::to_string(n)).c_str(),
                                  [n](benchmark::State& st) {
-                                   stepBenchmark(st, "backward-euler", n, omp_get_num_procs(), kCgTolerance);
+                                   stepBenchmark(st, "backward-euler", n, omp_get_num_procs(),
+                                                 kCgTolerance);
                                  })
-        ->Unit(benchmark::kMicrosecond)->UseRealTime();
+        ->Unit(benchmark::kMicrosecond)
+        ->UseRealTime();
   }
   // Threads: RK4 on 256 x 256 with one core and with all.
   for (int threads : {1, 2}) {
-    benchmark::RegisterBenchmark(("BM_Rk4Threads/256/" + std::to_string(threads)).c_str(),
-                                 [threads](benchmark::State& st) {
-                                   stepBenchmark(st, "rk4", 256, threads, kCgTolerance);
-                                 })
-        ->Unit(benchmark::kMillisecond)->UseRealTime();
+    benchmark::RegisterBenchmark(
+        ("BM_Rk4Threads/256/" + std::to_string(threads)).c_str(),
+        [threads](benchmark::State& st) { stepBenchmark(st, "rk4", 256, threads, kCgTolerance); })
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
   }
 }
 

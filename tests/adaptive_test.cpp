@@ -15,8 +15,8 @@ AdaptiveRun runAdaptive(double tolerance) {
   testing::Oscillator osc;
   osc.drag = 0.4;
   ParticleSystem system(osc.model(), {});
-  IntegratorSettings settings{.name = "dopri5", .abs_tolerance = tolerance * osc.amplitude,
-                              .rel_tolerance = tolerance};
+  IntegratorSettings settings{
+      .name = "dopri5", .abs_tolerance = tolerance * osc.amplitude, .rel_tolerance = tolerance};
   auto method = std::move(makeIntegrator(settings).value());
   State s = system.initialState();
   AdaptiveRun run;

@@ -20,8 +20,12 @@ constexpr double kRest = 0.1, kMass = 0.05, kStiffness = 50.0, kGravity = 9.8;
 
 Model verticalChain() {
   Model model;
-  buildChain({.particles = kFree + 1, .rest_length = kRest, .particle_mass = kMass,
-              .stiffness = kStiffness, .damping = 0.5, .direction = -Vec3::UnitY()},
+  buildChain({.particles = kFree + 1,
+              .rest_length = kRest,
+              .particle_mass = kMass,
+              .stiffness = kStiffness,
+              .damping = 0.5,
+              .direction = -Vec3::UnitY()},
              model);
   model.pinned[0] = 1;
   model.gravity = Vec3(0, -kGravity, 0);
@@ -39,7 +43,8 @@ TEST_P(ChainAtRest, MatchesClosedFormSag) {
   const auto& [integrator, h] = GetParam();
   ParticleSystem system(verticalChain(), {});
   auto method = testing::integratorNamed(integrator);
-  const State s = testing::integrate(system, *method, system.initialState(), h, std::lround(30 / h));
+  const State s =
+      testing::integrate(system, *method, system.initialState(), h, std::lround(30 / h));
   for (int j = 1; j <= kFree; ++j) {
     // After 30 s the slowest mode (damped at rate >= drag / 2m = 0.5 /s) has decayed by e^-15
     // of an initial sag of ~0.3 m: below 1e-7 m.

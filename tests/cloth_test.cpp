@@ -1,9 +1,10 @@
 // Cloth topology, normals and mesh export.
+#include "mysim/cloth.h"
+
 #include <gtest/gtest.h>
 
 #include <sstream>
 
-#include "mysim/cloth.h"
 #include "mysim/cloth_mesh.h"
 
 namespace mysim {

@@ -33,11 +33,11 @@ TEST(DrapeMetric, NodeDistanceRmsMaxAndWhere) {
 
 TEST(SurfaceDistance, PointTriangleDistanceInsideOnEdgeAtVertexAndDegenerate) {
   const Vector3d a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
-  EXPECT_DOUBLE_EQ(pointTriangleDistance({0.2, 0.2, 0.5}, a, b, c), 0.5);     // above the face
-  EXPECT_DOUBLE_EQ(pointTriangleDistance({0.5, -2, 0}, a, b, c), 2.0);       // beside edge ab
-  EXPECT_DOUBLE_EQ(pointTriangleDistance({-3, -4, 0}, a, b, c), 5.0);        // nearest vertex a
-  EXPECT_DOUBLE_EQ(pointTriangleDistance({0.5, 1, 0}, a, b, b), 1.0);        // a segment
-  EXPECT_DOUBLE_EQ(pointTriangleDistance({0, 0, 2}, a, a, a), 2.0);          // a point
+  EXPECT_DOUBLE_EQ(pointTriangleDistance({0.2, 0.2, 0.5}, a, b, c), 0.5);  // above the face
+  EXPECT_DOUBLE_EQ(pointTriangleDistance({0.5, -2, 0}, a, b, c), 2.0);     // beside edge ab
+  EXPECT_DOUBLE_EQ(pointTriangleDistance({-3, -4, 0}, a, b, c), 5.0);      // nearest vertex a
+  EXPECT_DOUBLE_EQ(pointTriangleDistance({0.5, 1, 0}, a, b, b), 1.0);      // a segment
+  EXPECT_DOUBLE_EQ(pointTriangleDistance({0, 0, 2}, a, a, a), 2.0);        // a point
 }
 
 Surface flatSheet(int n, double height) {
@@ -47,7 +47,8 @@ Surface flatSheet(int n, double height) {
   mysim::buildCloth(shape, model);  // 1 m square in the x-z plane
   Surface s;
   s.vertices.resize(n * n, 3);
-  for (int p = 0; p < n * n; ++p) s.vertices.row(p) = model.start_position.segment<3>(3 * p).transpose();
+  for (int p = 0; p < n * n; ++p)
+    s.vertices.row(p) = model.start_position.segment<3>(3 * p).transpose();
   s.vertices.col(1).array() += height;
   s.triangles = mysim::gridTriangles(*model.grid);
   return s;
@@ -144,9 +145,7 @@ TEST(SettlingMetric, TimeAfterWhichKineticEnergyStaysLowAndMaxStrain) {
 
 const std::string kRoot = SPRINGCHECK_SOURCE_DIR;
 
-std::string checkJson(const std::string& fields) {
-  return R"({"checks": [{)" + fields + "}]}";
-}
+std::string checkJson(const std::string& fields) { return R"({"checks": [{)" + fields + "}]}"; }
 const std::string kGoodCheck =
     R"("scene": "scenes/matched/chain_hanging.json", "engines": ["mysim", "bullet-deformable"],
        "metric": "drape_max", "bound": 1e-4, "why": "test")";
@@ -203,10 +202,10 @@ TEST(Gate, FailsWhenABoundIsTightenedBelowTheMeasuredValue) {
 }
 
 TEST(Gate, AnEngineThatRefusesTheSceneFailsItsCheck) {
-  auto tolerances = parseTolerances(
-      checkJson(R"("scene": "scenes/seed/cloth.json", "engines": ["bullet-classic"],
+  auto tolerances =
+      parseTolerances(checkJson(R"("scene": "scenes/seed/cloth.json", "engines": ["bullet-classic"],
                    "metric": "sag_lowest", "bound": 10, "why": "w")"),
-      "tol.json", kRoot);
+                      "tol.json", kRoot);
   ASSERT_TRUE(tolerances) << tolerances.error();
   const GateReport report = runGate(*tolerances);
   EXPECT_FALSE(report.passed());

@@ -26,8 +26,9 @@ Scene sceneFromText(const std::string& json) {
 }
 
 // Steps a scene in an engine by hand, calling `check` after every step.
-void stepScene(const Scene& scene, BulletEngine engine,
-               const std::function<void(const mysim::ParticleSystem&, const mysim::State&)>& check) {
+void stepScene(
+    const Scene& scene, BulletEngine engine,
+    const std::function<void(const mysim::ParticleSystem&, const mysim::State&)>& check) {
   mysim::ParticleSystem system(mysim::buildModel(scene), scene.limits);
   auto stepper = makeBulletStepper(scene, system.model(), engine);
   ASSERT_TRUE(stepper) << stepper.error();
@@ -58,7 +59,8 @@ TEST_P(EveryBulletEngine, FreeFallMatchesClosedFormWithinTheSymplecticEulerOffse
   ASSERT_NEAR(t, 1.0, 1e-9);
   for (int p = 0; p < 3; ++p) {
     const auto& particle = scene.particles[p];
-    const mysim::Vec3 exact = particle.position + particle.velocity * t + 0.5 * scene.gravity * t * t;
+    const mysim::Vec3 exact =
+        particle.position + particle.velocity * t + 0.5 * scene.gravity * t * t;
     // Every Bullet engine kicks then drifts (v += g h, x += v h): symplectic Euler, which lands
     // exactly g t h / 2 below the parabola. The classic world passes h through float (relative
     // 2e-8), hence the 1e-6 m allowance.
@@ -193,8 +195,8 @@ TEST(BulletRefusals, NameTheEngineAndTheField) {
   ASSERT_FALSE(drag);
   EXPECT_NE(drag.error().find("bullet-classic: forces.drag"), std::string::npos) << drag.error();
 
-  const Scene circle = sceneFromText(
-      R"({"system": {"type": "circle"}, "integrator": {"dt": 0.1, "duration": 1}})");
+  const Scene circle =
+      sceneFromText(R"({"system": {"type": "circle"}, "integrator": {"dt": 0.1, "duration": 1}})");
   auto run = runBullet(circle, BulletEngine::Implicit);
   ASSERT_FALSE(run);
   EXPECT_NE(run.error().find("bullet-implicit: system.type"), std::string::npos) << run.error();

@@ -101,11 +101,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"SpringToMissingParticle",
                 [] { return with(validParticles(), "/system/springs/0/j"_json_pointer, 7); },
                 "system.springs[0].j", "[0, 1]"},
-        BadCase{"EverythingPinned",
-                [] {
-                  return with(validParticles(), "/system/particles/1/pinned"_json_pointer, true);
-                },
-                "system.particles", "every particle is pinned"},
+        BadCase{
+            "EverythingPinned",
+            [] { return with(validParticles(), "/system/particles/1/pinned"_json_pointer, true); },
+            "system.particles", "every particle is pinned"},
         BadCase{"EveryChainParticlePinned",
                 [] {
                   return json::parse(R"({"system": {"type": "chain", "particles": 2,

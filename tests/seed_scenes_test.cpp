@@ -31,8 +31,8 @@ TEST_P(SeedScene, RunsWithoutBlowUpAndWithoutEnergyGain) {
   scene->duration = c.duration;
   auto system = makeSystem(*scene);
   auto method = std::move(makeIntegrator(scene->integrator).value());
-  const RunRecord r = simulate(*system, *method, initialState(*scene, *system),
-                               {scene->dt, scene->duration, 0.0});
+  const RunRecord r =
+      simulate(*system, *method, initialState(*scene, *system), {scene->dt, scene->duration, 0.0});
   ASSERT_FALSE(r.blowup) << r.blowup->check << " at t = " << r.blowup->time;
   EXPECT_NEAR(r.times.back(), c.duration, 1e-9);
   if (r.energies.empty()) {  // the circle: radius within 2 % of 1
@@ -51,18 +51,13 @@ TEST_P(SeedScene, RunsWithoutBlowUpAndWithoutEnergyGain) {
 
 INSTANTIATE_TEST_SUITE_P(
     SeedSystemsTimesSeedIntegrators, SeedScene,
-    ::testing::Values(SeedCase{"circle", "euler", 0.0004, 6.3},
-                      SeedCase{"circle", "trapezoidal", 0.04, 31.4},
-                      SeedCase{"circle", "rk4", 0.04, 31.4},
-                      SeedCase{"pendulum", "euler", 0.0001, 2.0},
-                      SeedCase{"pendulum", "trapezoidal", 0.002, 10.0},
-                      SeedCase{"pendulum", "rk4", 0.04, 10.0},
-                      SeedCase{"chain", "euler", 0.0002, 3.0},
-                      SeedCase{"chain", "trapezoidal", 0.002, 10.0},
-                      SeedCase{"chain", "rk4", 0.005, 10.0},
-                      SeedCase{"cloth", "euler", 0.0002, 2.0},
-                      SeedCase{"cloth", "trapezoidal", 0.001, 3.0},
-                      SeedCase{"cloth", "rk4", 0.002, 5.0}),
+    ::testing::Values(
+        SeedCase{"circle", "euler", 0.0004, 6.3}, SeedCase{"circle", "trapezoidal", 0.04, 31.4},
+        SeedCase{"circle", "rk4", 0.04, 31.4}, SeedCase{"pendulum", "euler", 0.0001, 2.0},
+        SeedCase{"pendulum", "trapezoidal", 0.002, 10.0}, SeedCase{"pendulum", "rk4", 0.04, 10.0},
+        SeedCase{"chain", "euler", 0.0002, 3.0}, SeedCase{"chain", "trapezoidal", 0.002, 10.0},
+        SeedCase{"chain", "rk4", 0.005, 10.0}, SeedCase{"cloth", "euler", 0.0002, 2.0},
+        SeedCase{"cloth", "trapezoidal", 0.001, 3.0}, SeedCase{"cloth", "rk4", 0.002, 5.0}),
     [](const auto& info) { return info.param.scene + "_" + info.param.integrator; });
 
 }  // namespace

@@ -1,10 +1,11 @@
 // The run loop: determinism, blow-up detection, wind, energy bookkeeping.
+#include "mysim/simulation.h"
+
 #include <gtest/gtest.h>
 
 #include <functional>
 
 #include "mysim/scene_file.h"
-#include "mysim/simulation.h"
 #include "test_support.h"
 
 namespace mysim {
@@ -28,7 +29,8 @@ std::uint64_t hashFrames(const RunRecord& r) {
   std::uint64_t h = 1469598103934665603ULL;
   for (const ParticleRows& f : r.frames) {
     const auto* bytes = reinterpret_cast<const unsigned char*>(f.data());
-    for (std::size_t i = 0; i < f.size() * sizeof(double); ++i) h = (h ^ bytes[i]) * 1099511628211ULL;
+    for (std::size_t i = 0; i < f.size() * sizeof(double); ++i)
+      h = (h ^ bytes[i]) * 1099511628211ULL;
   }
   return h;
 }
@@ -101,9 +103,9 @@ TEST(EnergyTerms, HandMadeCaseSplitsKineticGravityAndSpring) {
   m.springs.push_back({0, 1, 1.5, 8.0, 0.0, SpringFamily::Custom});
   Vector v = (Vector(6) << 5, 5, 5, 1, 2, 0).finished();  // the pinned particle's v is ignored
   const EnergyTerms e = mechanicalEnergy(m, m.start_position, v);
-  EXPECT_DOUBLE_EQ(e.kinetic, 0.5 * 3 * 5);          // 7.5 J
-  EXPECT_DOUBLE_EQ(e.gravity, -3 * 10 * 2);          // -m g.x = 3 * (-10) * (-2) -> -60 J
-  EXPECT_DOUBLE_EQ(e.spring, 0.5 * 8 * 0.25);        // stretched 0.5 m: 1 J
+  EXPECT_DOUBLE_EQ(e.kinetic, 0.5 * 3 * 5);    // 7.5 J
+  EXPECT_DOUBLE_EQ(e.gravity, -3 * 10 * 2);    // -m g.x = 3 * (-10) * (-2) -> -60 J
+  EXPECT_DOUBLE_EQ(e.spring, 0.5 * 8 * 0.25);  // stretched 0.5 m: 1 J
 }
 
 TEST(EnergyTerms, DampedChainNeverGainsEnergyBeyondRoundOff) {

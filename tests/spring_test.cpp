@@ -1,9 +1,9 @@
 // Spring force terms alone: the analytic Jacobians against central finite differences.
+#include "mysim/spring.h"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
-
-#include "mysim/spring.h"
 
 namespace mysim {
 namespace {
@@ -31,12 +31,12 @@ constexpr double kFdTolerance = 1e-6;
 TEST(SpringJacobian, PositionJacobianMatchesFiniteDifferencesStretchedAndCompressed) {
   for (double rest : {0.5, 1.0, 2.0}) {  // |xj - xi| = 1.08: stretched, near rest, compressed
     const Mat3 analytic = springPositionJacobian(xi, xj, vi, vj, rest, k, c);
-    const Mat3 numeric = finiteDifference(
-        [&](const Vec3& x) { return springForce(xi, x, vi, vj, rest, k, c); }, xj);
+    const Mat3 numeric =
+        finiteDifference([&](const Vec3& x) { return springForce(xi, x, vi, vj, rest, k, c); }, xj);
     EXPECT_LT((analytic - numeric).norm(), kFdTolerance * analytic.norm()) << rest;
     // dF_i/dxi is the negative: the force depends on xj - xi only.
-    const Mat3 numeric_i = finiteDifference(
-        [&](const Vec3& x) { return springForce(x, xj, vi, vj, rest, k, c); }, xi);
+    const Mat3 numeric_i =
+        finiteDifference([&](const Vec3& x) { return springForce(x, xj, vi, vj, rest, k, c); }, xi);
     EXPECT_LT((analytic + numeric_i).norm(), kFdTolerance * analytic.norm()) << rest;
   }
 }

@@ -1,11 +1,12 @@
 // Sweeps (table, resume, shards) and the stability search against theory.
+#include "compare/sweep.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 
 #include "compare/stability.h"
-#include "compare/sweep.h"
 
 namespace springcheck {
 namespace {
@@ -16,12 +17,14 @@ namespace fs = std::filesystem;
 class SmallSweep : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("springcheck_sweep_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = fs::temp_directory_path() /
+           ("springcheck_sweep_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
-    std::ofstream(dir_ / "spec.json") << R"({"name": "small", "scenes": [")" SPRINGCHECK_SOURCE_DIR
-        R"(/scenes/seed/circle.json"], "integrators": ["euler", "rk4"], "dt": [0.1, 0.05, 0.025],
+    std::ofstream(dir_ / "spec.json")
+        << R"({"name": "small", "scenes": [")" SPRINGCHECK_SOURCE_DIR
+           R"(/scenes/seed/circle.json"], "integrators": ["euler", "rk4"], "dt": [0.1, 0.05, 0.025],
         "duration": 3.0, "sample_interval": 0.1, "reference": "closed_form"})";
     auto spec = loadSweepSpec((dir_ / "spec.json").string());
     ASSERT_TRUE(spec) << spec.error();
@@ -93,16 +96,19 @@ TEST_F(SmallSweep, ShardsMergeToTheWhole) {
   EXPECT_EQ(*merged, 6);
   const auto rows = *readSweepTable((dir_ / "merged.csv").string());
   ASSERT_EQ(rows.size(), full.size());
-  for (std::size_t k = 0; k < full.size(); ++k) EXPECT_EQ(withoutTiming(rows[k]), withoutTiming(full[k]));
+  for (std::size_t k = 0; k < full.size(); ++k)
+    EXPECT_EQ(withoutTiming(rows[k]), withoutTiming(full[k]));
 }
 
 TEST_F(SmallSweep, MalformedSpecsNameTheField) {
-  std::ofstream(dir_ / "bad.json") << R"({"scenes": ["nope.json"], "dt": [0.1], "reference": "closed_form"})";
+  std::ofstream(dir_ / "bad.json")
+      << R"({"scenes": ["nope.json"], "dt": [0.1], "reference": "closed_form"})";
   auto bad = loadSweepSpec((dir_ / "bad.json").string());
   ASSERT_FALSE(bad);
   EXPECT_NE(bad.error().find("scenes[0]"), std::string::npos) << bad.error();
-  std::ofstream(dir_ / "bad2.json") << R"({"scenes": [")" SPRINGCHECK_SOURCE_DIR
-      R"(/scenes/seed/circle.json"], "dt": [0.1, 0.03], "sample_interval": 0.1, "reference": "closed_form"})";
+  std::ofstream(dir_ / "bad2.json")
+      << R"({"scenes": [")" SPRINGCHECK_SOURCE_DIR
+         R"(/scenes/seed/circle.json"], "dt": [0.1, 0.03], "sample_interval": 0.1, "reference": "closed_form"})";
   auto bad2 = loadSweepSpec((dir_ / "bad2.json").string());
   ASSERT_FALSE(bad2);
   EXPECT_NE(bad2.error().find("sample_interval"), std::string::npos) << bad2.error();
@@ -145,7 +151,8 @@ INSTANTIATE_TEST_SUITE_P(Oscillator, StabilityLimitAgreesWithTheory,
 TEST(StabilityLimit, BackwardEulerIsStableAtTheLargestStepTried) {
   // Including the damped cases whose state decays into subnormal numbers, where a CG without a
   // floor on its threshold once produced NaN (conjugate_gradient.cpp).
-  for (auto [k, m, zeta] : {std::tuple{1e3, 0.01, 0.0}, {10.0, 1.0, 0.05}, {100.0, 0.01, 0.05}, {100.0, 1.0, 0.05}}) {
+  for (auto [k, m, zeta] :
+       {std::tuple{1e3, 0.01, 0.0}, {10.0, 1.0, 0.05}, {100.0, 0.01, 0.05}, {100.0, 1.0, 0.05}}) {
     const StabilityLimit l = oscillatorStability("backward-euler", k, m, zeta, {});
     EXPECT_EQ(l.status, "stable-at-max") << k << " " << m;  // h w = 100
   }

@@ -63,8 +63,8 @@ inline std::unique_ptr<Integrator> integratorNamed(const std::string& name,
 
 // Integrators that take a particle system: all of them.
 inline const std::vector<std::string>& particleIntegrators() {
-  static const std::vector<std::string> names = {"euler",  "trapezoidal",    "rk4",   "symplectic-euler",
-                                                 "verlet", "backward-euler", "dopri5"};
+  static const std::vector<std::string> names = {
+      "euler", "trapezoidal", "rk4", "symplectic-euler", "verlet", "backward-euler", "dopri5"};
   return names;
 }
 

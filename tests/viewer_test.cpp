@@ -9,10 +9,10 @@ namespace {
 const std::string kRoot = SPRINGCHECK_SOURCE_DIR "/scenes/";
 
 ViewerSession session(const std::string& first = kRoot + "matched/cloth_hanging.json") {
-  return ViewerSession({kRoot + "seed/circle.json", kRoot + "seed/pendulum.json",
-                        kRoot + "matched/chain_swing.json", kRoot + "matched/cloth_hanging.json",
-                        kRoot + "matched/cloth_on_sphere.json"},
-                       first, {"mysim", "bullet-deformable"}, "", 0.0);
+  return ViewerSession(
+      {kRoot + "seed/circle.json", kRoot + "seed/pendulum.json", kRoot + "matched/chain_swing.json",
+       kRoot + "matched/cloth_hanging.json", kRoot + "matched/cloth_on_sphere.json"},
+      first, {"mysim", "bullet-deformable"}, "", 0.0);
 }
 
 double firstPosition(const ViewerSession& s) { return s.engines()[0].state.y[3 * 5 + 1]; }
@@ -50,7 +50,8 @@ TEST(ViewerKeys, DTurnsWindOnAndOffInEveryEngine) {
   // Wind along +z pushes both engines' cloth towards +z, against the same cloth without it.
   for (std::size_t k = 0; k < windy.engines().size(); ++k) {
     ASSERT_TRUE(windy.engines()[k].running()) << windy.engines()[k].refused;
-    EXPECT_GT(meanZ(windy.engines()[k]), meanZ(calm.engines()[k]) + 0.01) << windy.engines()[k].engine;
+    EXPECT_GT(meanZ(windy.engines()[k]), meanZ(calm.engines()[k]) + 0.01)
+        << windy.engines()[k].engine;
   }
   windy.handleKey('d');
   EXPECT_FALSE(windy.scene().wind);

@@ -37,7 +37,8 @@ std::optional<ClosedFormError> chainSagError(const mysim::Scene& scene,
   const mysim::Vec3 down = scene.gravity / g;
   double worst = 0.0, end = 0.0;
   for (int j = 1; j <= n; ++j) {
-    const double drop = j * c.rest_length + (c.particle_mass * g / c.stiffness) * j * (2 * n - j + 1) / 2.0;
+    const double drop =
+        j * c.rest_length + (c.particle_mass * g / c.stiffness) * j * (2 * n - j + 1) / 2.0;
     const mysim::Vec3 exact = c.origin + drop * down;
     worst = std::max(worst, (run.frames.back().row(j).head<3>().transpose() - exact).norm());
     end = drop;
@@ -60,7 +61,8 @@ std::optional<ClosedFormError> pendulumPeriodError(const mysim::Scene& scene,
   for (std::size_t f = 0; f < run.frames.size(); ++f) {
     const double u = across.dot(run.frames[f].row(1).head<3>().transpose() - c.origin);
     if (f > 0 && previous > 0 && u <= 0) {
-      crossings.push_back(run.times[f - 1] + (run.times[f] - run.times[f - 1]) * previous / (previous - u));
+      crossings.push_back(run.times[f - 1] +
+                          (run.times[f] - run.times[f - 1]) * previous / (previous - u));
     }
     previous = u;
   }

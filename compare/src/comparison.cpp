@@ -14,7 +14,10 @@ namespace springcheck {
 
 std::expected<Comparison, std::string> compareScene(const mysim::Scene& scene,
                                                     const std::vector<std::string>& engines) {
-  Comparison c{scene, scene.kind == mysim::SystemKind::Circle ? mysim::Model{} : mysim::buildModel(scene), {}, {}, {}, {}};
+  Comparison c{
+      scene, scene.kind == mysim::SystemKind::Circle ? mysim::Model{} : mysim::buildModel(scene),
+      {},    {},
+      {},    {}};
   for (const std::string& engine : engines) {
     if (auto known = checkEngineName(engine); !known) return std::unexpected(known.error());
   }
@@ -99,8 +102,11 @@ namespace {
 using nlohmann::json;
 
 json metricsJson(const EngineMetrics& m) {
-  json j = {{"engine", m.engine}, {"steps", m.steps}, {"wall_seconds", m.wall_seconds},
-            {"external_work", m.external_work}, {"energy_reference", m.drift.reference}};
+  json j = {{"engine", m.engine},
+            {"steps", m.steps},
+            {"wall_seconds", m.wall_seconds},
+            {"external_work", m.external_work},
+            {"energy_reference", m.drift.reference}};
   for (const MetricInfo& info : metricCatalog()) {
     if (info.pair) continue;
     const auto v = metricValue(m, info.name);
@@ -141,8 +147,11 @@ std::expected<void, std::string> writeComparison(const std::string& dir, const C
       return w;
     }
   }
-  json j = {{"scene", c.scene.name}, {"scene_file", c.scene.source}, {"dt", c.scene.dt},
-            {"duration", c.scene.duration}, {"refused", c.refused}};
+  json j = {{"scene", c.scene.name},
+            {"scene_file", c.scene.source},
+            {"dt", c.scene.dt},
+            {"duration", c.scene.duration},
+            {"refused", c.refused}};
   j["engines"] = json::array();
   for (const EngineMetrics& m : c.engines) j["engines"].push_back(metricsJson(m));
   j["pairs"] = json::array();

@@ -17,15 +17,16 @@ namespace {
 
 std::expected<mysim::RunRecord, std::string> runMysim(const mysim::Scene& scene) {
   auto integrator = mysim::makeIntegrator(scene.integrator);
-  if (!integrator) return std::unexpected(scene.source + ": integrator.name: " + integrator.error());
+  if (!integrator)
+    return std::unexpected(scene.source + ": integrator.name: " + integrator.error());
   std::unique_ptr<mysim::OdeSystem> system = mysim::makeSystem(scene);
   if ((*integrator)->needsParticles() && !system->particles()) {
     return std::unexpected(scene.source + ": integrator.name: '" + scene.integrator.name +
                            "' needs a particle system; the circle is a first-order ODE");
   }
   const mysim::State start = mysim::initialState(scene, *system);
-  mysim::RunRecord record = mysim::simulate(
-      *system, **integrator, start, {scene.dt, scene.duration, scene.sample_interval});
+  mysim::RunRecord record = mysim::simulate(*system, **integrator, start,
+                                            {scene.dt, scene.duration, scene.sample_interval});
   record.engine = "mysim";
   record.integrator = scene.integrator.name;
   return record;

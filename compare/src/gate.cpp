@@ -42,7 +42,8 @@ CheckResult evaluate(const ToleranceCheck& check, const Comparison& c) {
   } else {
     for (const std::string& engine : check.engines) {
       if (metrics_of(engine)->blew_up) {
-        r.problem = engine + " blew up at t = " + std::to_string(metrics_of(engine)->blowup_time) + " s";
+        r.problem =
+            engine + " blew up at t = " + std::to_string(metrics_of(engine)->blowup_time) + " s";
         return r;
       }
     }
@@ -95,8 +96,9 @@ void printGate(std::ostream& out, const GateReport& report) {
     if (r.check.engines.size() > 1) engines += " ~ " + r.check.engines[1];
     std::string scene = r.check.scene.substr(r.check.scene.find_last_of('/') + 1);
     if (r.measured) {
-      std::snprintf(line, sizeof line, "%s  %-22s %-20s %-44s %11.4g <= %-11.4g", r.passed ? "PASS" : "FAIL",
-                    scene.c_str(), r.check.metric.c_str(), engines.c_str(), *r.measured, r.check.bound);
+      std::snprintf(line, sizeof line, "%s  %-22s %-20s %-44s %11.4g <= %-11.4g",
+                    r.passed ? "PASS" : "FAIL", scene.c_str(), r.check.metric.c_str(),
+                    engines.c_str(), *r.measured, r.check.bound);
     } else {
       std::snprintf(line, sizeof line, "FAIL  %-22s %-20s %-44s %s", scene.c_str(),
                     r.check.metric.c_str(), engines.c_str(), r.problem.c_str());

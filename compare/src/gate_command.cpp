@@ -1,11 +1,10 @@
+#include <fstream>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 
 #include "commands.h"
 #include "compare/gate.h"
-
-#include <fstream>
-#include <nlohmann/json.hpp>
 
 namespace springcheck {
 
@@ -27,12 +26,18 @@ void addGateCommand(CLI::App& app, int& exit_code) {
     if (!json_out->empty()) {
       nlohmann::json results = nlohmann::json::array();
       for (const CheckResult& r : report.results) {
-        results.push_back({{"scene", r.check.scene}, {"engines", r.check.engines},
-                           {"metric", r.check.metric}, {"bound", r.check.bound},
-                           {"why", r.check.why}, {"passed", r.passed}, {"problem", r.problem},
-                           {"measured", r.measured ? nlohmann::json(*r.measured) : nlohmann::json()}});
+        results.push_back(
+            {{"scene", r.check.scene},
+             {"engines", r.check.engines},
+             {"metric", r.check.metric},
+             {"bound", r.check.bound},
+             {"why", r.check.why},
+             {"passed", r.passed},
+             {"problem", r.problem},
+             {"measured", r.measured ? nlohmann::json(*r.measured) : nlohmann::json()}});
       }
-      std::ofstream(*json_out) << nlohmann::json{{"tolerances", *path}, {"checks", results}}.dump(2) << '\n';
+      std::ofstream(*json_out) << nlohmann::json{{"tolerances", *path}, {"checks", results}}.dump(2)
+                               << '\n';
     }
     exit_code = report.passed() ? kOk : kFailure;
   });

@@ -8,7 +8,8 @@ Penetration penetration(const mysim::Sphere& sphere, const mysim::ParticleRows& 
   Penetration p;
   double total = 0.0;
   for (int i = 0; i < frame.rows(); ++i) {
-    const double depth = sphere.radius - (frame.row(i).head<3>().transpose() - sphere.center).norm();
+    const double depth =
+        sphere.radius - (frame.row(i).head<3>().transpose() - sphere.center).norm();
     if (depth <= 0.0) continue;
     ++p.count;
     total += depth;

@@ -2,7 +2,8 @@
 
 namespace springcheck {
 
-Progress::Progress(std::string label, bool terminal) : label_(std::move(label)), terminal_(terminal) {}
+Progress::Progress(std::string label, bool terminal)
+    : label_(std::move(label)), terminal_(terminal) {}
 
 void Progress::update(int done, int total) {
   const double elapsed =

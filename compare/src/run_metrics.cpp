@@ -62,17 +62,19 @@ PairMetrics pairMetrics(const mysim::Scene& scene, const mysim::Model& model, co
   m.drape = nodeDistance(fa.leftCols<3>(), fb.leftCols<3>());
   if (scene.kind != mysim::SystemKind::Circle) {
     m.surface = surfaceDistance(surfaceOf(model, fa), surfaceOf(model, fb));
-    m.sag_difference =
-        std::abs(sagOverTime(model, a.record).lowest.back() - sagOverTime(model, b.record).lowest.back());
+    m.sag_difference = std::abs(sagOverTime(model, a.record).lowest.back() -
+                                sagOverTime(model, b.record).lowest.back());
   }
   const auto& ta = a.record.times;
   const auto& tb = b.record.times;
   if (ta.size() == tb.size() &&
-      std::equal(ta.begin(), ta.end(), tb.begin(), [](double x, double y) { return std::abs(x - y) < 1e-9; })) {
+      std::equal(ta.begin(), ta.end(), tb.begin(),
+                 [](double x, double y) { return std::abs(x - y) < 1e-9; })) {
     double worst = 0.0;
     for (std::size_t f = 0; f < ta.size(); ++f) {
-      worst = std::max(worst, nodeDistance(a.record.frames[f].leftCols<3>(),
-                                           b.record.frames[f].leftCols<3>()).rms);
+      worst = std::max(
+          worst,
+          nodeDistance(a.record.frames[f].leftCols<3>(), b.record.frames[f].leftCols<3>()).rms);
     }
     m.trajectory_rms_max = worst;
   }

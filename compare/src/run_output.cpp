@@ -24,7 +24,8 @@ long peakResidentBytes() {
 }
 
 json energyJson(const mysim::EnergyTerms& e) {
-  return {{"kinetic", e.kinetic}, {"gravity", e.gravity}, {"spring", e.spring}, {"total", e.total()}};
+  return {
+      {"kinetic", e.kinetic}, {"gravity", e.gravity}, {"spring", e.spring}, {"total", e.total()}};
 }
 
 json summaryJson(const mysim::Scene& scene, const mysim::RunRecord& r) {

@@ -25,8 +25,8 @@ mysim::Scene oscillatorScene(double stiffness, double mass, double damping_ratio
   return s;
 }
 
-std::optional<double> theoryStableStep(const std::string& integrator, double stiffness,
-                                       double mass, double damping_ratio) {
+std::optional<double> theoryStableStep(const std::string& integrator, double stiffness, double mass,
+                                       double damping_ratio) {
   const double w = std::sqrt(stiffness / mass);
   if (integrator == "symplectic-euler" || integrator == "verlet") return 2.0 / w;
   if (integrator == "rk4") return 2.0 * std::sqrt(2.0) / w;
@@ -82,8 +82,8 @@ StabilityLimit oscillatorStability(const std::string& integrator, double stiffne
     }
     return true;
   };
-  StabilityLimit limit = bisect(stable, settings.h_min_omega / w, settings.h_max_omega / w,
-                                settings.precision);
+  StabilityLimit limit =
+      bisect(stable, settings.h_min_omega / w, settings.h_max_omega / w, settings.precision);
   limit.system = "oscillator";
   limit.integrator = integrator;
   limit.stiffness = stiffness;

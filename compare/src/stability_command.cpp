@@ -20,7 +20,7 @@ namespace {
 
 struct StabilityOptions {
   std::string scene;
-  std::vector<std::string> integrators = {"euler", "trapezoidal", "rk4", "symplectic-euler",
+  std::vector<std::string> integrators = {"euler",  "trapezoidal",   "rk4", "symplectic-euler",
                                           "verlet", "backward-euler"};
   std::vector<double> stiffness = {10, 100, 1e3, 1e4, 1e5};
   std::vector<double> masses = {1e-6, 1e-2, 1.0};
@@ -56,7 +56,8 @@ void writeExtremes(const std::string& path, int jobs) {
   out.precision(8);
   out << "case,integrator,quantity,value,unit\n";
   // 10^6 steps of the undamped oscillator at h w = 0.1.
-  const std::vector<std::string> long_methods = {"symplectic-euler", "verlet", "rk4", "backward-euler", "trapezoidal"};
+  const std::vector<std::string> long_methods = {"symplectic-euler", "verlet", "rk4",
+                                                 "backward-euler", "trapezoidal"};
   std::vector<std::string> rows(long_methods.size());
   parallelFor(static_cast<int>(long_methods.size()), jobs, [&](int k) {
     mysim::Scene s = oscillatorScene(100.0, 1.0, 0.0);
@@ -69,15 +70,19 @@ void writeExtremes(const std::string& path, int jobs) {
     const EnergyDrift d = energyDrift(r->energies);
     std::ostringstream row;
     row.precision(8);
-    row << "oscillator 1e6 steps h w = 0.1," << long_methods[k] << ",energy drift max," << d.max_abs_total << ",rel\n"
-        << "oscillator 1e6 steps h w = 0.1," << long_methods[k] << ",energy drift end," << d.total.back() << ",rel\n"
-        << "oscillator 1e6 steps h w = 0.1," << long_methods[k] << ",wall time," << r->wall_seconds << ",s\n";
+    row << "oscillator 1e6 steps h w = 0.1," << long_methods[k] << ",energy drift max,"
+        << d.max_abs_total << ",rel\n"
+        << "oscillator 1e6 steps h w = 0.1," << long_methods[k] << ",energy drift end,"
+        << d.total.back() << ",rel\n"
+        << "oscillator 1e6 steps h w = 0.1," << long_methods[k] << ",wall time," << r->wall_seconds
+        << ",s\n";
     rows[k] = row.str();
   });
   for (const std::string& row : rows) out << row;
 
   // A 256 x 256 cloth (the matched hanging cloth's 1 m, 0.5 kg and springs at 65 536 particles).
-  for (auto [integrator, dt, steps] : {std::tuple{"symplectic-euler", 1e-4, 50}, {"backward-euler", 2e-3, 5}}) {
+  for (auto [integrator, dt, steps] :
+       {std::tuple{"symplectic-euler", 1e-4, 50}, {"backward-euler", 2e-3, 5}}) {
     mysim::Scene s;
     s.name = "cloth256";
     s.kind = mysim::SystemKind::Cloth;
@@ -93,7 +98,8 @@ void writeExtremes(const std::string& path, int jobs) {
     s.duration = steps * dt;
     s.sample_interval = s.duration;
     auto r = runEngine(s, "mysim");
-    out << "cloth 256 x 256," << integrator << ",time per step," << r->wall_seconds / r->steps << ",s\n"
+    out << "cloth 256 x 256," << integrator << ",time per step," << r->wall_seconds / r->steps
+        << ",s\n"
         << "cloth 256 x 256," << integrator << ",stable," << (r->blowup ? 0 : 1) << ",1/0\n";
     if (r->counts.linear_iterations) {
       out << "cloth 256 x 256," << integrator << ",CG iterations per step,"
@@ -106,7 +112,8 @@ void writeExtremes(const std::string& path, int jobs) {
 }
 
 int stability(const StabilityOptions& o) {
-  const int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int jobs =
+      o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   for (const std::string& name : o.integrators) {
     if (auto ok = mysim::canonicalIntegratorName(name); !ok) {
       std::cerr << "error: --integrators: " << ok.error() << '\n';
@@ -142,14 +149,16 @@ int stability(const StabilityOptions& o) {
                       : oscillatorStability(c.integrator, c.k, c.m, o.damping_ratio, {});
     std::lock_guard<std::mutex> lock(mutex);
     ++done;
-    if (done % std::max<int>(1, combos.size() / 10) == 0 || done == static_cast<int>(combos.size())) {
+    if (done % std::max<int>(1, combos.size() / 10) == 0 ||
+        done == static_cast<int>(combos.size())) {
       std::cerr << "stability: " << done << "/" << combos.size() << " done\n";
     }
   });
   std::filesystem::create_directories(o.out);
   std::ofstream out(o.out + "/stability.csv");
   out.precision(8);
-  out << "system,integrator,stiffness,mass,omega,damping_ratio,h_stable,h_unstable,status,theory_h,ratio\n";
+  out << "system,integrator,stiffness,mass,omega,damping_ratio,h_stable,h_unstable,status,theory_h,"
+         "ratio\n";
   std::printf("%-12s %-17s %9s %9s %11s %11s %11s %7s\n", "system", "integrator", "k [N/m]",
               "m [kg]", "h_max [s]", "theory [s]", "h w", "ratio");
   for (const StabilityLimit& l : limits) {
@@ -176,11 +185,19 @@ void addStabilityCommand(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<StabilityOptions>();
   CLI::App* cmd = app.add_subcommand(
       "stability", "Largest stable step per integrator, stiffness and mass (bisection)");
-  cmd->add_option("--scene", o->scene, "Scene (default: the built-in oscillator, with theory lines)");
-  cmd->add_option("--integrators", o->integrators, "Integrators")->delimiter(',')->capture_default_str();
-  cmd->add_option("--stiffness", o->stiffness, "Spring stiffness values, N/m")->delimiter(',')->capture_default_str();
-  cmd->add_option("--masses", o->masses, "Particle masses, kg")->delimiter(',')->capture_default_str();
-  cmd->add_option("--damping-ratio", o->damping_ratio, "Oscillator damping ratio (drag)")->capture_default_str();
+  cmd->add_option("--scene", o->scene,
+                  "Scene (default: the built-in oscillator, with theory lines)");
+  cmd->add_option("--integrators", o->integrators, "Integrators")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--stiffness", o->stiffness, "Spring stiffness values, N/m")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--masses", o->masses, "Particle masses, kg")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--damping-ratio", o->damping_ratio, "Oscillator damping ratio (drag)")
+      ->capture_default_str();
   cmd->add_option("--out", o->out, "Output directory")->capture_default_str();
   cmd->add_flag("--extremes", o->extremes, "Also: 1e6-step energy drift, a 256 x 256 cloth");
   cmd->add_option("--jobs", o->jobs, "Parallel runs (default: all cores)");

@@ -32,8 +32,10 @@ std::string number(double v) {
   return out.str();
 }
 
-std::expected<std::vector<double>, std::string> positiveList(const json& j, const std::string& field) {
-  if (!j.is_array() || j.empty()) return std::unexpected(field + ": expected a non-empty list of numbers > 0");
+std::expected<std::vector<double>, std::string> positiveList(const json& j,
+                                                             const std::string& field) {
+  if (!j.is_array() || j.empty())
+    return std::unexpected(field + ": expected a non-empty list of numbers > 0");
   std::vector<double> values;
   for (const json& v : j) {
     if (!v.is_number() || !(v.get<double>() > 0) || !std::isfinite(v.get<double>())) {
@@ -44,8 +46,10 @@ std::expected<std::vector<double>, std::string> positiveList(const json& j, cons
   return values;
 }
 
-std::expected<std::vector<std::string>, std::string> stringList(const json& j, const std::string& field) {
-  if (!j.is_array() || j.empty()) return std::unexpected(field + ": expected a non-empty list of names");
+std::expected<std::vector<std::string>, std::string> stringList(const json& j,
+                                                                const std::string& field) {
+  if (!j.is_array() || j.empty())
+    return std::unexpected(field + ": expected a non-empty list of names");
   std::vector<std::string> values;
   for (const json& v : j) {
     if (!v.is_string()) return std::unexpected(field + ": expected names, got " + v.dump());
@@ -63,8 +67,9 @@ bool multipleOf(double interval, double dt) {
 std::expected<SweepSpec, std::string> parseSpec(const json& j, const std::string& source) {
   auto bad = [&](const std::string& message) { return std::unexpected(source + ": " + message); };
   if (!j.is_object()) return bad("expected an object");
-  static const std::set<std::string> known = {"$comment", "name", "scenes", "engines", "integrators", "dt",
-                                              "stiffness_scale", "duration", "sample_interval", "reference"};
+  static const std::set<std::string> known = {
+      "$comment",        "name",     "scenes",          "engines",  "integrators", "dt",
+      "stiffness_scale", "duration", "sample_interval", "reference"};
   for (auto it = j.begin(); it != j.end(); ++it) {
     if (!known.count(it.key())) return bad(it.key() + ": unknown field (see docs/sweeps.md)");
   }
@@ -86,7 +91,8 @@ std::expected<SweepSpec, std::string> parseSpec(const json& j, const std::string
     auto engines = stringList(j["engines"], "engines");
     if (!engines) return bad(engines.error());
     for (const std::string& e : *engines) {
-      if (e.find(':') != std::string::npos) return bad("engines: list integrators under \"integrators\", not as " + e);
+      if (e.find(':') != std::string::npos)
+        return bad("engines: list integrators under \"integrators\", not as " + e);
       if (auto ok = checkEngineName(e); !ok) return bad("engines: " + ok.error());
     }
     s.engines = *engines;
@@ -114,7 +120,8 @@ std::expected<SweepSpec, std::string> parseSpec(const json& j, const std::string
     s.stiffness_scales = *scales;
   }
   if (j.contains("duration")) {
-    if (!j["duration"].is_number() || !(j["duration"].get<double>() > 0)) return bad("duration: expected a number > 0");
+    if (!j["duration"].is_number() || !(j["duration"].get<double>() > 0))
+      return bad("duration: expected a number > 0");
     s.duration = j["duration"].get<double>();
   }
   s.sample_interval = *std::max_element(s.dts.begin(), s.dts.end());
@@ -130,7 +137,8 @@ std::expected<SweepSpec, std::string> parseSpec(const json& j, const std::string
                  number(dt) + " s (frames of all runs must line up)");
     }
   }
-  if (!j.contains("reference")) return bad("reference: missing (\"closed_form\" or {\"integrator\", \"refine\"})");
+  if (!j.contains("reference"))
+    return bad("reference: missing (\"closed_form\" or {\"integrator\", \"refine\"})");
   const json& ref = j["reference"];
   if (ref.is_string() && ref.get<std::string>() == "closed_form") {
     s.reference_closed_form = true;
@@ -138,7 +146,8 @@ std::expected<SweepSpec, std::string> parseSpec(const json& j, const std::string
     auto name = mysim::canonicalIntegratorName(ref.value("integrator", "rk4"));
     if (!name) return bad("reference.integrator: " + name.error());
     s.reference_integrator = *name;
-    if (ref.contains("refine") && (!ref["refine"].is_number_integer() || ref["refine"].get<int>() < 1)) {
+    if (ref.contains("refine") &&
+        (!ref["refine"].is_number_integer() || ref["refine"].get<int>() < 1)) {
       return bad("reference.refine: expected an integer >= 1");
     }
     s.reference_refine = ref.value("refine", 16);
@@ -200,11 +209,28 @@ std::expected<mysim::Scene, std::string> caseScene(const SweepSpec& spec, const 
 }
 
 const std::vector<std::string>& sweepColumns() {
-  static const std::vector<std::string> columns = {
-      "case_id", "scene", "engine", "integrator", "dt", "stiffness_scale", "status",
-      "blowup_time", "blowup_check", "wall_seconds", "steps", "derivative_evaluations",
-      "accepted_steps", "rejected_steps", "linear_iterations", "reference", "error",
-      "final_error", "energy_drift_max", "energy_rise", "max_strain", "note"};
+  static const std::vector<std::string> columns = {"case_id",
+                                                   "scene",
+                                                   "engine",
+                                                   "integrator",
+                                                   "dt",
+                                                   "stiffness_scale",
+                                                   "status",
+                                                   "blowup_time",
+                                                   "blowup_check",
+                                                   "wall_seconds",
+                                                   "steps",
+                                                   "derivative_evaluations",
+                                                   "accepted_steps",
+                                                   "rejected_steps",
+                                                   "linear_iterations",
+                                                   "reference",
+                                                   "error",
+                                                   "final_error",
+                                                   "energy_drift_max",
+                                                   "energy_rise",
+                                                   "max_strain",
+                                                   "note"};
   return columns;
 }
 
@@ -215,7 +241,8 @@ constexpr int kParameterColumns = 6;  // case_id .. stiffness_scale
 using ReferenceKey = std::pair<std::string, double>;  // scene, stiffness scale
 
 // Max over frames and last-frame RMS node distance between a run and its reference.
-std::pair<double, double> trajectoryError(const mysim::RunRecord& run, const mysim::RunRecord& ref) {
+std::pair<double, double> trajectoryError(const mysim::RunRecord& run,
+                                          const mysim::RunRecord& ref) {
   double worst = 0.0, last = 0.0;
   const std::size_t frames = std::min(run.frames.size(), ref.frames.size());
   for (std::size_t f = 0; f < frames; ++f) {
@@ -233,8 +260,8 @@ std::string sanitize(std::string text) {
 
 SweepRow runCase(const SweepSpec& spec, const SweepCase& c,
                  const std::map<ReferenceKey, mysim::RunRecord>& references) {
-  SweepRow row = {std::to_string(c.id), c.scene, c.engine, c.integrator, number(c.dt),
-                  number(c.stiffness_scale)};
+  SweepRow row = {std::to_string(c.id), c.scene,      c.engine,
+                  c.integrator,         number(c.dt), number(c.stiffness_scale)};
   row.resize(sweepColumns().size());
   auto set = [&](const std::string& column, const std::string& value) {
     const auto& cols = sweepColumns();
@@ -283,7 +310,8 @@ SweepRow runCase(const SweepSpec& spec, const SweepCase& c,
     const auto it = references.find({c.scene, c.stiffness_scale});
     if (it != references.end()) {
       const auto [worst, last] = trajectoryError(r, it->second);
-      set("reference", spec.reference_integrator + " at dt/" + std::to_string(spec.reference_refine));
+      set("reference",
+          spec.reference_integrator + " at dt/" + std::to_string(spec.reference_refine));
       set("error", number(worst));
       set("final_error", number(last));
     }
@@ -309,9 +337,8 @@ std::string joinRow(const SweepRow& row) {
 std::string header() { return joinRow(sweepColumns()); }
 
 std::expected<void, std::string> writeSorted(const std::string& path, std::vector<SweepRow> rows) {
-  std::sort(rows.begin(), rows.end(), [](const SweepRow& a, const SweepRow& b) {
-    return std::stoi(a[0]) < std::stoi(b[0]);
-  });
+  std::sort(rows.begin(), rows.end(),
+            [](const SweepRow& a, const SweepRow& b) { return std::stoi(a[0]) < std::stoi(b[0]); });
   const std::string tmp = path + ".tmp";
   {
     std::ofstream out(tmp);
@@ -376,7 +403,12 @@ std::expected<int, std::string> runSweep(const SweepSpec& spec, const std::strin
     std::atomic<std::size_t> next{0};
     auto work = [&] {
       for (std::size_t k; (k = next++) < list.size();) {
-        SweepCase c{-1, list[k].first, "mysim", spec.reference_integrator, finest / spec.reference_refine, list[k].second};
+        SweepCase c{-1,
+                    list[k].first,
+                    "mysim",
+                    spec.reference_integrator,
+                    finest / spec.reference_refine,
+                    list[k].second};
         auto scene = caseScene(spec, c);
         results[k] = scene ? runEngine(*scene, "mysim") : std::unexpected(scene.error());
       }
@@ -385,8 +417,10 @@ std::expected<int, std::string> runSweep(const SweepSpec& spec, const std::strin
     for (int t = 0; t < std::max(1, options.jobs); ++t) threads.emplace_back(work);
     for (std::thread& t : threads) t.join();
     for (std::size_t k = 0; k < list.size(); ++k) {
-      if (!results[k]) return std::unexpected("reference run of " + list[k].first + ": " + results[k].error());
-      if (results[k]->blowup) return std::unexpected("reference run of " + list[k].first + " blew up");
+      if (!results[k])
+        return std::unexpected("reference run of " + list[k].first + ": " + results[k].error());
+      if (results[k]->blowup)
+        return std::unexpected("reference run of " + list[k].first + " blew up");
       references.emplace(list[k], std::move(*results[k]));
     }
   }
@@ -422,8 +456,11 @@ std::expected<int, std::string> mergeSweepTables(const std::vector<std::string>&
     for (SweepRow& row : *table) {
       const int id = std::stoi(row[0]);
       auto [it, inserted] = rows.emplace(id, row);
-      if (!inserted && !std::equal(row.begin(), row.begin() + kParameterColumns, it->second.begin())) {
-        return std::unexpected(input + ": case " + row[0] + " has other parameters than in an earlier table: not shards of one sweep");
+      if (!inserted &&
+          !std::equal(row.begin(), row.begin() + kParameterColumns, it->second.begin())) {
+        return std::unexpected(
+            input + ": case " + row[0] +
+            " has other parameters than in an earlier table: not shards of one sweep");
       }
     }
   }

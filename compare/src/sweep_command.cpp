@@ -1,5 +1,6 @@
 #include <unistd.h>
 
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <mutex>
@@ -8,8 +9,6 @@
 #include "commands.h"
 #include "compare/progress.h"
 #include "compare/sweep.h"
-
-#include <filesystem>
 
 namespace springcheck {
 namespace {
@@ -29,7 +28,8 @@ int sweep(const SweepCommandOptions& o) {
     return kBadInput;
   }
   SweepOptions options;
-  options.jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  options.jobs =
+      o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   if (std::sscanf(o.shard.c_str(), "%d/%d", &options.shard_index, &options.shard_count) != 2 ||
       options.shard_count < 1 || options.shard_index < 0 ||
       options.shard_index >= options.shard_count) {
@@ -61,7 +61,8 @@ void addSweepCommands(CLI::App& app, int& exit_code) {
   cmd->add_option("spec", o->spec, "Sweep spec (JSON, see docs/sweeps.md)")->required();
   cmd->add_option("--out", o->out, "Results table (default out/sweep/NAME.csv)");
   cmd->add_option("--jobs", o->jobs, "Parallel runs (default: all cores)");
-  cmd->add_option("--shard", o->shard, "Run only cases with id % n == i, as i/n")->capture_default_str();
+  cmd->add_option("--shard", o->shard, "Run only cases with id % n == i, as i/n")
+      ->capture_default_str();
   cmd->add_flag("--fresh", o->fresh, "Start over instead of resuming an existing table");
   cmd->callback([o, &exit_code] { exit_code = sweep(*o); });
 

@@ -55,7 +55,8 @@ std::expected<ToleranceCheck, std::string> readCheck(const json& j, const std::s
     return bad("metric", "unknown metric '" + c.metric + "'; expected one of " + names);
   }
   if (c.engines.size() != (info->pair ? 2u : 1u)) {
-    return bad("engines", "metric '" + c.metric + "' takes " + (info->pair ? "two engines" : "one engine"));
+    return bad("engines",
+               "metric '" + c.metric + "' takes " + (info->pair ? "two engines" : "one engine"));
   }
   if (!j["bound"].is_number() || !std::isfinite(j["bound"].get<double>()) ||
       j["bound"].get<double>() < 0) {
@@ -88,7 +89,8 @@ std::expected<Tolerances, std::string> parseTolerances(const std::string& text,
   }
   fs::path scene_root = base_dir;
   if (root.contains("scene_root")) {
-    if (!root["scene_root"].is_string()) return std::unexpected(source + ": scene_root: expected a path");
+    if (!root["scene_root"].is_string())
+      return std::unexpected(source + ": scene_root: expected a path");
     scene_root /= root["scene_root"].get<std::string>();
   }
   if (!root.contains("checks") || !root["checks"].is_array() || root["checks"].empty()) {
@@ -96,7 +98,8 @@ std::expected<Tolerances, std::string> parseTolerances(const std::string& text,
   }
   Tolerances t{source, {}};
   for (std::size_t k = 0; k < root["checks"].size(); ++k) {
-    auto check = readCheck(root["checks"][k], source + ": checks[" + std::to_string(k) + "]", scene_root);
+    auto check =
+        readCheck(root["checks"][k], source + ": checks[" + std::to_string(k) + "]", scene_root);
     if (!check) return std::unexpected(check.error());
     t.checks.push_back(std::move(*check));
   }

@@ -28,19 +28,18 @@ int view(const ViewOptions& o) {
     return kBadInput;
   }
   // The scenes `t` cycles through: the seed's systems and the cloth on the sphere.
-  std::vector<std::string> scenes = {"scenes/seed/circle.json", "scenes/seed/pendulum.json",
-                                     "scenes/matched/chain_swing.json",
-                                     "scenes/matched/cloth_hanging.json",
-                                     "scenes/matched/cloth_on_sphere.json"};
+  std::vector<std::string> scenes = {
+      "scenes/seed/circle.json", "scenes/seed/pendulum.json", "scenes/matched/chain_swing.json",
+      "scenes/matched/cloth_hanging.json", "scenes/matched/cloth_on_sphere.json"};
   if (!o.integrator.empty()) {
     if (auto ok = mysim::canonicalIntegratorName(o.integrator); !ok) {
       std::cerr << "error: --integrator: " << ok.error() << '\n';
       return kBadInput;
     }
   }
-  viewer::ViewerSession session(scenes, o.scene, engines,
-                                o.integrator.empty() ? "" : *mysim::canonicalIntegratorName(o.integrator),
-                                o.dt);
+  viewer::ViewerSession session(
+      scenes, o.scene, engines,
+      o.integrator.empty() ? "" : *mysim::canonicalIntegratorName(o.integrator), o.dt);
   if (!session.error().empty()) {
     std::cerr << "error: " << session.error() << '\n';
     return kBadInput;
@@ -54,7 +53,8 @@ void addViewCommand(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<ViewOptions>();
   CLI::App* cmd = app.add_subcommand("view", "Watch a scene in mysim and Bullet side by side");
   cmd->add_option("scene", o->scene, "Scene file to show first")->required();
-  cmd->add_option("--engines", o->engines, "Comma-separated engines, one viewport each")->capture_default_str();
+  cmd->add_option("--engines", o->engines, "Comma-separated engines, one viewport each")
+      ->capture_default_str();
   cmd->add_option("--integrator", o->integrator, "mysim integrator (i cycles)");
   cmd->add_option("--dt", o->dt, "Step in s (overrides the scenes)")->check(CLI::PositiveNumber);
   cmd->add_option("--frames", o->frames, "Run this many frames without a person, then close");

@@ -51,9 +51,9 @@ class BackwardEuler final : public Integrator {
     }
     fill(ps, x, v, h);
 
-    const CgResult cg = conjugateGradient(
-        [this, &ps](const Vector& in, Vector& out) { multiply(ps, in, out); }, inverse_diagonal_,
-        rhs_, dv_free_, tolerance_, max_iterations_);
+    const CgResult cg =
+        conjugateGradient([this, &ps](const Vector& in, Vector& out) { multiply(ps, in, out); },
+                          inverse_diagonal_, rhs_, dv_free_, tolerance_, max_iterations_);
     StepCounts counts{.accepted = 1, .derivative_evaluations = 1};
     counts.linear_iterations = cg.iterations;
     if (!cg.converged) counts.solver_failures = 1;
@@ -151,8 +151,8 @@ class BackwardEuler final : public Integrator {
     }
   }
 
-  std::vector<int> free_index_;      // (N) row block of each free particle, -1 if pinned
-  std::vector<int> free_particles_;  // (F) particle of each row block
+  std::vector<int> free_index_;              // (N) row block of each free particle, -1 if pinned
+  std::vector<int> free_particles_;          // (F) particle of each row block
   std::vector<ImplicitSpringBlock> blocks_;  // (2S) this step's block of each incidence
   std::vector<Mat3> diagonal_;               // (F) diagonal blocks
   Vector f_, dv_known_, rhs_, dv_free_, inverse_diagonal_;

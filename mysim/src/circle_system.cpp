@@ -15,8 +15,8 @@ std::optional<OdeSystem::Unhealthy> CircleSystem::checkHealth(const State& state
   // Forward Euler grows the radius by sqrt(1 + h^2) a step; a thousandfold growth is runaway.
   const double limit = 1e3 * start_.norm();
   if (state.y.norm() > limit) {
-    return Unhealthy{"energy", "radius " + std::to_string(state.y.norm()) + " > " +
-                                   std::to_string(limit)};
+    return Unhealthy{"energy",
+                     "radius " + std::to_string(state.y.norm()) + " > " + std::to_string(limit)};
   }
   return std::nullopt;
 }

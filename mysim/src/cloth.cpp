@@ -23,7 +23,8 @@ void buildCloth(const ClothShape& shape, Model& model) {
   model.start_velocity = Vector::Zero(3 * n);
   for (int r = 0; r < rows; ++r) {
     for (int c = 0; c < cols; ++c) {
-      at3(model.start_position, index(r, c)) = shape.origin + c * dx * along_row + r * dy * down_rows;
+      at3(model.start_position, index(r, c)) =
+          shape.origin + c * dx * along_row + r * dy * down_rows;
     }
   }
 
@@ -36,8 +37,10 @@ void buildCloth(const ClothShape& shape, Model& model) {
   for (int r = 0; r < rows; ++r) {
     for (int c = 0; c < cols; ++c) {
       if (shape.structural) {
-        if (c + 1 < cols) link(index(r, c), index(r, c + 1), *shape.structural, SpringFamily::Structural);
-        if (r + 1 < rows) link(index(r, c), index(r + 1, c), *shape.structural, SpringFamily::Structural);
+        if (c + 1 < cols)
+          link(index(r, c), index(r, c + 1), *shape.structural, SpringFamily::Structural);
+        if (r + 1 < rows)
+          link(index(r, c), index(r + 1, c), *shape.structural, SpringFamily::Structural);
       }
       if (shape.shear && r + 1 < rows && c + 1 < cols) {
         link(index(r, c), index(r + 1, c + 1), *shape.shear, SpringFamily::Shear);

@@ -23,7 +23,7 @@ constexpr double a[7][6] = {
     {9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656},
     {35.0 / 384, 0.0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84}};
 // Fifth-order weights are the last row of a; e = b5 - b4 gives the error estimate.
-constexpr std::array<double, 7> e = {71.0 / 57600,  0.0,          -71.0 / 16695, 71.0 / 1920,
+constexpr std::array<double, 7> e = {71.0 / 57600,      0.0,        -71.0 / 16695, 71.0 / 1920,
                                      -17253.0 / 339200, 22.0 / 525, -1.0 / 40};
 
 class DormandPrince final : public Integrator {
@@ -39,9 +39,9 @@ class DormandPrince final : public Integrator {
       const double h = last ? t_end - s.t : h_;
       const double err = trialStep(system, s, h);
       counts.derivative_evaluations += 7;
-      const double factor =
-          std::isfinite(err) ? std::clamp(0.9 * std::pow(std::max(err, 1e-10), -0.2), 0.2, 5.0)
-                             : 0.2;
+      const double factor = std::isfinite(err)
+                                ? std::clamp(0.9 * std::pow(std::max(err, 1e-10), -0.2), 0.2, 5.0)
+                                : 0.2;
       const bool give_up = h < 1e-10 * H;  // the tolerance cannot be met: let health checks judge
       if (err <= 1.0 || give_up) {
         s.y = y5_;
@@ -75,8 +75,7 @@ class DormandPrince final : public Integrator {
     for (int i = 0; i < 7; ++i) {
       if (e[i] != 0.0) error_ += (h * e[i]) * k_[i];
     }
-    const Vector scale =
-        (atol_ + rtol_ * s.y.cwiseAbs().cwiseMax(y5_.cwiseAbs()).array()).matrix();
+    const Vector scale = (atol_ + rtol_ * s.y.cwiseAbs().cwiseMax(y5_.cwiseAbs()).array()).matrix();
     return std::sqrt((error_.array() / scale.array()).square().mean());
   }
 

@@ -31,7 +31,8 @@ std::expected<std::string, std::string> canonicalIntegratorName(std::string_view
     valid += (valid.empty() ? "" : ", ") + info.name;
     if (!info.alias.empty()) valid += " (" + info.alias + ")";
   }
-  return std::unexpected("unknown integrator '" + std::string(name) + "'; expected one of " + valid);
+  return std::unexpected("unknown integrator '" + std::string(name) + "'; expected one of " +
+                         valid);
 }
 
 std::expected<std::unique_ptr<Integrator>, std::string> makeIntegrator(

@@ -1,9 +1,9 @@
 #include "mysim/particle_system.h"
 
-#include "mysim/vector_ops.h"
-
 #include <cmath>
 #include <string>
+
+#include "mysim/vector_ops.h"
 
 namespace mysim {
 
@@ -65,8 +65,8 @@ void ParticleSystem::force(double t, Eigen::Ref<const Vector> x, Eigen::Ref<cons
   gather(t, x, v, f, false);
 }
 
-void ParticleSystem::acceleration(double t, Eigen::Ref<const Vector> x,
-                                  Eigen::Ref<const Vector> v, Eigen::Ref<Vector> a) const {
+void ParticleSystem::acceleration(double t, Eigen::Ref<const Vector> x, Eigen::Ref<const Vector> v,
+                                  Eigen::Ref<Vector> a) const {
   gather(t, x, v, a, true);
 }
 

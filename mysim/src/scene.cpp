@@ -7,10 +7,14 @@ namespace mysim {
 
 const char* systemKindName(SystemKind kind) {
   switch (kind) {
-    case SystemKind::Circle: return "circle";
-    case SystemKind::Chain: return "chain";
-    case SystemKind::Cloth: return "cloth";
-    case SystemKind::Particles: return "particles";
+    case SystemKind::Circle:
+      return "circle";
+    case SystemKind::Chain:
+      return "chain";
+    case SystemKind::Cloth:
+      return "cloth";
+    case SystemKind::Particles:
+      return "particles";
   }
   return "?";
 }
@@ -18,9 +22,14 @@ const char* systemKindName(SystemKind kind) {
 Model buildModel(const Scene& scene) {
   Model model;
   switch (scene.kind) {
-    case SystemKind::Circle: break;
-    case SystemKind::Chain: buildChain(scene.chain, model); break;
-    case SystemKind::Cloth: buildCloth(scene.cloth, model); break;
+    case SystemKind::Circle:
+      break;
+    case SystemKind::Chain:
+      buildChain(scene.chain, model);
+      break;
+    case SystemKind::Cloth:
+      buildCloth(scene.cloth, model);
+      break;
     case SystemKind::Particles: {
       const int n = static_cast<int>(scene.particles.size());
       model.mass.resize(n);

@@ -37,7 +37,9 @@ class ObjectReader {
     if (!object_.is_object()) fail(path_.empty() ? "(top level)" : path_, "an object", object_);
   }
 
-  std::string field(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+  std::string field(const std::string& key) const {
+    return path_.empty() ? key : path_ + "." + key;
+  }
   bool has(const std::string& key) {
     seen_.insert(key);
     return object_.contains(key);
@@ -54,13 +56,17 @@ class ObjectReader {
     if (!std::isfinite(d)) fail(field(key), "a finite number", v);
     return d;
   }
-  double number(const std::string& key, double fallback) { return has(key) ? number(key) : fallback; }
+  double number(const std::string& key, double fallback) {
+    return has(key) ? number(key) : fallback;
+  }
   double positive(const std::string& key) {
     const double d = number(key);
     if (!(d > 0.0)) fail(field(key), "a number > 0", raw(key));
     return d;
   }
-  double positive(const std::string& key, double fallback) { return has(key) ? positive(key) : fallback; }
+  double positive(const std::string& key, double fallback) {
+    return has(key) ? positive(key) : fallback;
+  }
   double nonNegative(const std::string& key, double fallback) {
     if (!has(key)) return fallback;
     const double d = number(key);
@@ -70,7 +76,8 @@ class ObjectReader {
   long integer(const std::string& key, long low, long high) {
     const json& v = raw(key);
     if (!v.is_number_integer() || v.get<long>() < low || v.get<long>() > high) {
-      fail(field(key), "an integer in [" + std::to_string(low) + ", " + std::to_string(high) + "]", v);
+      fail(field(key), "an integer in [" + std::to_string(low) + ", " + std::to_string(high) + "]",
+           v);
     }
     return v.get<long>();
   }
@@ -103,7 +110,9 @@ class ObjectReader {
     }
     return out;
   }
-  Vec3 vec3(const std::string& key, const Vec3& fallback) { return has(key) ? vec3(key) : fallback; }
+  Vec3 vec3(const std::string& key, const Vec3& fallback) {
+    return has(key) ? vec3(key) : fallback;
+  }
   Vec3 unitVec3(const std::string& key, const Vec3& fallback) {
     if (!has(key)) return fallback;
     const Vec3 v = vec3(key);
@@ -145,8 +154,9 @@ std::vector<int> readPins(ObjectReader& system, int count, const std::vector<int
     if (rows > 0 && preset == "top_corners") return {0, cols - 1};
     if (rows > 0 && preset == "corners") return {0, cols - 1, (rows - 1) * cols, rows * cols - 1};
     if (preset == "none") return {};
-    fail(field, rows > 0 ? "\"top_corners\", \"corners\", \"none\" or a list of particle indices"
-                         : "\"none\" or a list of particle indices",
+    fail(field,
+         rows > 0 ? "\"top_corners\", \"corners\", \"none\" or a list of particle indices"
+                  : "\"none\" or a list of particle indices",
          v);
   }
   if (!v.is_array()) fail(field, "a list of particle indices", v);
@@ -316,14 +326,16 @@ void checkWhole(Scene& scene) {
   if (scene.kind == SystemKind::Particles) {
     bool any_free = false;
     for (const ExplicitParticle& p : scene.particles) any_free |= !p.pinned;
-    if (!any_free) throw FieldError{"system.particles", "every particle is pinned: nothing would move"};
+    if (!any_free)
+      throw FieldError{"system.particles", "every particle is pinned: nothing would move"};
   }
   if (scene.kind == SystemKind::Circle && scene.integrator.name != "") {
     for (const IntegratorInfo& info : integratorCatalog()) {
       if (info.name == scene.integrator.name && info.needs_particles) {
-        throw FieldError{"integrator.name", "'" + info.name +
-                                                "' needs a particle system; the circle is a "
-                                                "first-order ODE (use euler, trapezoidal, rk4, dopri5)"};
+        throw FieldError{"integrator.name",
+                         "'" + info.name +
+                             "' needs a particle system; the circle is a "
+                             "first-order ODE (use euler, trapezoidal, rk4, dopri5)"};
       }
     }
   }
@@ -383,7 +395,8 @@ Scene readScene(const json& root) {
   is.abs_tolerance = integ.positive("abs_tolerance", is.abs_tolerance);
   is.rel_tolerance = integ.positive("rel_tolerance", is.rel_tolerance);
   is.cg_tolerance = integ.positive("cg_tolerance", is.cg_tolerance);
-  is.cg_max_iterations = static_cast<int>(integ.integer("cg_max_iterations", 1, 1'000'000, is.cg_max_iterations));
+  is.cg_max_iterations =
+      static_cast<int>(integ.integer("cg_max_iterations", 1, 1'000'000, is.cg_max_iterations));
   integ.refuseUnknown();
 
   if (top.has("output")) {

@@ -6,11 +6,16 @@ namespace mysim {
 
 const char* familyName(SpringFamily family) {
   switch (family) {
-    case SpringFamily::Structural: return "structural";
-    case SpringFamily::Shear: return "shear";
-    case SpringFamily::Flex: return "flex";
-    case SpringFamily::Chain: return "chain";
-    case SpringFamily::Custom: return "custom";
+    case SpringFamily::Structural:
+      return "structural";
+    case SpringFamily::Shear:
+      return "shear";
+    case SpringFamily::Flex:
+      return "flex";
+    case SpringFamily::Chain:
+      return "chain";
+    case SpringFamily::Custom:
+      return "custom";
   }
   return "custom";
 }

@@ -51,7 +51,8 @@ class ClassicStepper final : public BulletStepper {
     body_.reset(buildSoftBody(info, model, material));
     body_->m_cfg.piterations = scene.classic.iterations;
     body_->setActivationState(DISABLE_DEACTIVATION);
-    body_->getCollisionShape()->setMargin(model.sphere ? std::max(model.sphere->margin, 1e-4) : 1e-3);
+    body_->getCollisionShape()->setMargin(model.sphere ? std::max(model.sphere->margin, 1e-4)
+                                                       : 1e-3);
     if (model.drag > 0.0) {
       // The classic solver sets v = (x - x_old) / h * (1 - kDP): viscous drag c is c h / m.
       body_->m_cfg.kDP = model.drag * h / uniformFreeMass(model);
@@ -68,11 +69,13 @@ class ClassicStepper final : public BulletStepper {
       // Bullet's aero model (setWindVelocity with kLF/kDG) is a drag on relative velocity over
       // node normals: another force law. mysim's wind is a force per particle, which the classic
       // body takes as it is through addForce before each step.
-      notes_.push_back("wind applied per node through btSoftBody::addForce (mysim's force law), "
-                       "not Bullet's aero model");
+      notes_.push_back(
+          "wind applied per node through btSoftBody::addForce (mysim's force law), "
+          "not Bullet's aero model");
     }
-    notes_.push_back("springs mapped to links with kLST = 1 - (1 - a)^(1/n), a = k h^2 w / (1 + k h^2 w), n = " +
-                     std::to_string(scene.classic.iterations));
+    notes_.push_back(
+        "springs mapped to links with kLST = 1 - (1 - a)^(1/n), a = k h^2 w / (1 + k h^2 w), n = " +
+        std::to_string(scene.classic.iterations));
     world_->addSoftBody(body_.get());
   }
 

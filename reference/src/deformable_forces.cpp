@@ -27,11 +27,9 @@ void DeformableDragForce::addScaledDampingForceDifferential(btScalar scale, cons
   forFreeNodes([&](const btSoftBody::Node&, int i) { df[i] -= scale * drag_ * dv[i]; });
 }
 
-void DeformableDragForce::buildDampingForceDifferentialDiagonal(btScalar scale,
-                                                                TVStack& diagonal) {
-  forFreeNodes([&](const btSoftBody::Node&, int i) {
-    diagonal[i] -= btVector3(1, 1, 1) * (scale * drag_);
-  });
+void DeformableDragForce::buildDampingForceDifferentialDiagonal(btScalar scale, TVStack& diagonal) {
+  forFreeNodes(
+      [&](const btSoftBody::Node&, int i) { diagonal[i] -= btVector3(1, 1, 1) * (scale * drag_); });
 }
 
 }  // namespace reference

@@ -10,9 +10,9 @@
 
 #include "deformable_forces.h"
 #include "engine_support.h"
-#include "steppers.h"
 #include "soft_body.h"
 #include "static_sphere.h"
+#include "steppers.h"
 
 namespace reference {
 namespace {
@@ -50,17 +50,20 @@ class DeformableStepper final : public BulletStepper {
     info.m_sparsesdf.setDefaultVoxelsz(model.sphere ? model.sphere->radius / 10 : 0.25);
     info.m_sparsesdf.Reset();
 
-    body_.reset(buildSoftBody(info, model, [](btSoftBody&, const mysim::Spring&) { return nullptr; }));
+    body_.reset(
+        buildSoftBody(info, model, [](btSoftBody&, const mysim::Spring&) { return nullptr; }));
     body_->setActivationState(DISABLE_DEACTIVATION);  // else it sleeps below 0.04 m/s
-    body_->getCollisionShape()->setMargin(model.sphere ? std::max(model.sphere->margin, 1e-4) : 1e-3);
+    body_->getCollisionShape()->setMargin(model.sphere ? std::max(model.sphere->margin, 1e-4)
+                                                       : 1e-3);
     body_->m_cfg.collisions = 0;
     if (model.sphere) {
       body_->m_cfg.collisions = btSoftBody::fCollision::SDF_RD | btSoftBody::fCollision::SDF_RDN;
       body_->m_cfg.kKHR = 1.0;  // contact hardness against static bodies: 0.1 by default (soft)
       sphere_ = std::make_unique<StaticSphere>(*world_, *model.sphere);
       if (implicit) {
-        notes_.push_back("implicit mode against a static sphere exploded in most set-ups tried "
-                         "(shared/bullet-notes.md); a blow-up here is Bullet's, reported as is");
+        notes_.push_back(
+            "implicit mode against a static sphere exploded in most set-ups tried "
+            "(shared/bullet-notes.md); a blow-up here is Bullet's, reported as is");
       }
     }
     world_->addSoftBody(body_.get());

@@ -1,6 +1,6 @@
-#include "reference/bullet_engine.h"
-
 #include <cmath>
+
+#include "reference/bullet_engine.h"
 
 namespace reference {
 
@@ -12,9 +12,12 @@ const std::vector<std::string>& bulletEngineNames() {
 
 const char* bulletEngineName(BulletEngine engine) {
   switch (engine) {
-    case BulletEngine::Deformable: return "bullet-deformable";
-    case BulletEngine::Implicit: return "bullet-implicit";
-    case BulletEngine::Classic: return "bullet-classic";
+    case BulletEngine::Deformable:
+      return "bullet-deformable";
+    case BulletEngine::Implicit:
+      return "bullet-implicit";
+    case BulletEngine::Classic:
+      return "bullet-classic";
   }
   return "?";
 }

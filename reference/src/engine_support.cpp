@@ -7,10 +7,12 @@ namespace reference {
 std::string springField(const mysim::Scene& scene, const mysim::Spring& spring, int index,
                         const std::string& parameter) {
   switch (scene.kind) {
-    case mysim::SystemKind::Chain: return "system." + parameter;
+    case mysim::SystemKind::Chain:
+      return "system." + parameter;
     case mysim::SystemKind::Cloth:
       return std::string("system.") + mysim::familyName(spring.family) + "." + parameter;
-    default: return "system.springs[" + std::to_string(index) + "]." + parameter;
+    default:
+      return "system.springs[" + std::to_string(index) + "]." + parameter;
   }
 }
 

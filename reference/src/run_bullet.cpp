@@ -28,8 +28,12 @@ std::expected<mysim::RunRecord, std::string> runBullet(const mysim::Scene& scene
                                             {scene.dt, scene.duration, scene.sample_interval});
   record.engine = bulletEngineName(engine);
   switch (engine) {
-    case BulletEngine::Deformable: record.integrator = "bullet-explicit"; break;
-    case BulletEngine::Implicit: record.integrator = "bullet-backward-euler"; break;
+    case BulletEngine::Deformable:
+      record.integrator = "bullet-explicit";
+      break;
+    case BulletEngine::Implicit:
+      record.integrator = "bullet-backward-euler";
+      break;
     case BulletEngine::Classic:
       record.integrator = "bullet-pbd-" + std::to_string(scene.classic.iterations);
       break;

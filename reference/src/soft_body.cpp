@@ -1,8 +1,9 @@
 #include "soft_body.h"
 
 namespace reference {
-btSoftBody* buildSoftBody(btSoftBodyWorldInfo& info, const mysim::Model& model,
-                          const std::function<btSoftBody::Material*(btSoftBody&, const mysim::Spring&)>& material) {
+btSoftBody* buildSoftBody(
+    btSoftBodyWorldInfo& info, const mysim::Model& model,
+    const std::function<btSoftBody::Material*(btSoftBody&, const mysim::Spring&)>& material) {
   const int n = model.particleCount();
   btAlignedObjectArray<btVector3> positions;
   btAlignedObjectArray<btScalar> masses;

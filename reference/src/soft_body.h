@@ -15,8 +15,9 @@ inline btVector3 toBt(const mysim::Vec3& v) { return btVector3(v.x(), v.y(), v.z
 // the model's own: Bullet resets them to the current distances whenever it updates its constants,
 // so this calls updateConstants() itself, then writes the model's rest lengths back and clears
 // the pending-update flag (the pitfall in shared/bullet-notes.md).
-btSoftBody* buildSoftBody(btSoftBodyWorldInfo& info, const mysim::Model& model,
-                          const std::function<btSoftBody::Material*(btSoftBody&, const mysim::Spring&)>& material);
+btSoftBody* buildSoftBody(
+    btSoftBodyWorldInfo& info, const mysim::Model& model,
+    const std::function<btSoftBody::Material*(btSoftBody&, const mysim::Spring&)>& material);
 
 // Pinned nodes follow the pin motion: before a step, their velocity is set to land exactly on the
 // prescribed position at t + h; after it, position and velocity are set to the prescription.

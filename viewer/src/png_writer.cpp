@@ -36,7 +36,8 @@ void chunk(std::ofstream& file, const char* type, const std::vector<std::uint8_t
 
 }  // namespace
 
-bool writePng(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgb) {
+bool writePng(const std::string& path, int width, int height,
+              const std::vector<std::uint8_t>& rgb) {
   std::ofstream file(path, std::ios::binary);
   const std::uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
   file.write(reinterpret_cast<const char*>(signature), 8);

@@ -43,8 +43,8 @@ void ViewerSession::build() {
   // The circle takes first-order methods only: fall back to RK4 there.
   auto info = std::find_if(mysim::integratorCatalog().begin(), mysim::integratorCatalog().end(),
                            [&](const auto& i) { return i.name == integrator_; });
-  scene_.integrator.name = (scene_.kind == mysim::SystemKind::Circle && info->needs_particles)
-                               ? "rk4" : integrator_;
+  scene_.integrator.name =
+      (scene_.kind == mysim::SystemKind::Circle && info->needs_particles) ? "rk4" : integrator_;
   if (requested_dt_ > 0) scene_.dt = requested_dt_;
   dt_ = scene_.dt;
   if (wind_ && scene_.kind != mysim::SystemKind::Circle) {
@@ -72,7 +72,8 @@ void ViewerSession::build() {
       if (scene_.kind == mysim::SystemKind::Circle) {
         view.refused = "the circle is a first-order ODE, not a soft body";
       } else {
-        auto system = std::make_unique<mysim::ParticleSystem>(mysim::buildModel(scene_), scene_.limits);
+        auto system =
+            std::make_unique<mysim::ParticleSystem>(mysim::buildModel(scene_), scene_.limits);
         auto stepper = reference::makeBulletStepper(scene_, system->model(), *engine);
         if (stepper) {
           view.state = system->initialState();
@@ -113,7 +114,8 @@ void ViewerSession::stepOnce() {
     if (!e.running()) continue;
     const auto start = std::chrono::steady_clock::now();
     e.integrator->step(*e.system, e.state, dt_);
-    e.step_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    e.step_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (auto bad = e.system->checkHealth(e.state)) {
       e.blowup_time = e.state.t;
       e.blowup_check = bad->check;
@@ -133,7 +135,8 @@ void ViewerSession::advance(double real_seconds, double budget_seconds) {
     stepOnce();
     owed_ -= dt_;
     ++steps;
-    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > budget_seconds) {
+    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >
+        budget_seconds) {
       owed_ = 0.0;  // cannot keep up: run slower than real time instead of falling behind
       break;
     }
@@ -165,7 +168,8 @@ bool ViewerSession::handleKey(char key) {
       return true;
     case 'i': {
       const auto& catalog = mysim::integratorCatalog();
-      auto it = std::find_if(catalog.begin(), catalog.end(), [&](const auto& i) { return i.name == integrator_; });
+      auto it = std::find_if(catalog.begin(), catalog.end(),
+                             [&](const auto& i) { return i.name == integrator_; });
       std::size_t k = it == catalog.end() ? 0 : (it - catalog.begin() + 1) % catalog.size();
       if (scene_.kind == mysim::SystemKind::Circle) {
         while (catalog[k].needs_particles) k = (k + 1) % catalog.size();

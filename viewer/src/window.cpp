@@ -96,7 +96,8 @@ void drawEngine(const ViewerSession& session, const EngineView& e) {
     glDisable(GL_LIGHTING);
     glColor3f(0.5f, 0.5f, 0.5f);
     glBegin(GL_LINE_LOOP);
-    for (int k = 0; k < 128; ++k) glVertex3d(std::cos(2 * M_PI * k / 128), std::sin(2 * M_PI * k / 128), 0);
+    for (int k = 0; k < 128; ++k)
+      glVertex3d(std::cos(2 * M_PI * k / 128), std::sin(2 * M_PI * k / 128), 0);
     glEnd();
     glPointSize(10);
     glColor3f(1.0f, 0.8f, 0.2f);
@@ -129,9 +130,14 @@ void drawEngine(const ViewerSession& session, const EngineView& e) {
     glBegin(GL_LINES);
     for (const mysim::Spring& s : model.springs) {
       switch (s.family) {
-        case mysim::SpringFamily::Shear: glColor3f(0.4f, 0.7f, 1.0f); break;
-        case mysim::SpringFamily::Flex: glColor3f(0.5f, 0.9f, 0.5f); break;
-        default: glColor3f(0.95f, 0.95f, 0.95f);
+        case mysim::SpringFamily::Shear:
+          glColor3f(0.4f, 0.7f, 1.0f);
+          break;
+        case mysim::SpringFamily::Flex:
+          glColor3f(0.5f, 0.9f, 0.5f);
+          break;
+        default:
+          glColor3f(0.95f, 0.95f, 0.95f);
       }
       glVertex3d(rows(s.i, 0), rows(s.i, 1), rows(s.i, 2));
       glVertex3d(rows(s.j, 0), rows(s.j, 1), rows(s.j, 2));
@@ -189,7 +195,8 @@ void render(ViewerSession& session, int width, int height, double fps) {
   const Camera& cam = session.camera();
   const Eigen::Vector3d target(cam.target[0], cam.target[1], cam.target[2]);
   const Eigen::Vector3d eye =
-      target + cam.distance * Eigen::Vector3d(std::cos(cam.pitch) * std::sin(cam.yaw), std::sin(cam.pitch),
+      target + cam.distance * Eigen::Vector3d(std::cos(cam.pitch) * std::sin(cam.yaw),
+                                              std::sin(cam.pitch),
                                               std::cos(cam.pitch) * std::cos(cam.yaw));
   for (int i = 0; i < static_cast<int>(engines.size()); ++i) {
     glViewport(i * view_width, 0, view_width, height);
@@ -232,7 +239,8 @@ void render(ViewerSession& session, int width, int height, double fps) {
   if (session.swing()) top += "  swing";
   drawText(10, 10, top);
   std::string metrics;
-  if (auto d = session.engineDistance()) metrics += "engine distance rms " + format("%.3g m", *d) + "  ";
+  if (auto d = session.engineDistance())
+    metrics += "engine distance rms " + format("%.3g m", *d) + "  ";
   if (auto p = session.penetration()) metrics += "penetration " + format("%.3g mm", 1e3 * *p);
   drawText(10, 30, metrics, 0.8f, 0.9f, 1.0f);
   for (int i = 0; i < static_cast<int>(engines.size()); ++i) {
@@ -240,14 +248,21 @@ void render(ViewerSession& session, int width, int height, double fps) {
     const double x = i * view_width + 10;
     drawText(x, 56, e.engine, 1.0f, 0.85f, 0.4f);
     if (!e.refused.empty()) {
-      drawText(x, 74, "refused: " + e.refused.substr(e.refused.rfind(": ") + 2).substr(0, view_width / 12), 1, 0.5f, 0.5f);
+      drawText(x, 74,
+               "refused: " + e.refused.substr(e.refused.rfind(": ") + 2).substr(0, view_width / 12),
+               1, 0.5f, 0.5f);
       continue;
     }
     if (auto en = session.energy(e)) drawText(x, 74, "E " + format("%.5g J", *en));
     drawText(x, 92, "stepping " + format("%.2f ms a frame", 1e3 * e.step_seconds));
-    if (e.blowup_time) drawText(x, 110, "blow-up at t " + format("%.3f s", *e.blowup_time) + " " + e.blowup_check, 1, 0.3f, 0.3f);
+    if (e.blowup_time)
+      drawText(x, 110, "blow-up at t " + format("%.3f s", *e.blowup_time) + " " + e.blowup_check, 1,
+               0.3f, 0.3f);
   }
-  drawText(10, height - 22, "t scene d wind s swing w shade/springs r reset i integrator space pause . step, drag/wheel: camera", 0.7f, 0.7f, 0.7f);
+  drawText(10, height - 22,
+           "t scene d wind s swing w shade/springs r reset i integrator space pause . step, "
+           "drag/wheel: camera",
+           0.7f, 0.7f, 0.7f);
 }
 
 }  // namespace
@@ -260,7 +275,8 @@ int runWindow(ViewerSession& session, const WindowOptions& options) {
   }
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 2);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 1);
-  GLFWwindow* window = glfwCreateWindow(options.width, options.height, "springcheck view", nullptr, nullptr);
+  GLFWwindow* window =
+      glfwCreateWindow(options.width, options.height, "springcheck view", nullptr, nullptr);
   if (!window) {
     std::cerr << "error: cannot create an OpenGL 2.1 window\n";
     glfwTerminate();
@@ -305,7 +321,8 @@ int runWindow(ViewerSession& session, const WindowOptions& options) {
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
         glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, pixels.data());
         for (int y = 0; y < height; ++y) {
-          std::copy_n(pixels.begin() + 3L * width * (height - 1 - y), 3L * width, flipped.begin() + 3L * width * y);
+          std::copy_n(pixels.begin() + 3L * width * (height - 1 - y), 3L * width,
+                      flipped.begin() + 3L * width * y);
         }
         if (!writePng(options.screenshot, width, height, flipped)) {
           std::cerr << "error: cannot write " << options.screenshot << '\n';

@@ -27,23 +27,23 @@ struct EngineMetrics {
   double blowup_time = 0.0;
   double wall_seconds = 0.0;
   long steps = 0;
-  double sag_lowest = 0.0;                  // m below the pins, last frame
-  std::optional<double> sag_free_middle;    // m, last frame
+  double sag_lowest = 0.0;                // m below the pins, last frame
+  std::optional<double> sag_free_middle;  // m, last frame
   std::optional<ClosedFormError> closed_form;
-  double penetration_max = 0.0;             // m, deepest over all frames (0 without a sphere)
-  double penetration_mean_max = 0.0;        // m, largest per-frame mean depth
-  int penetration_count_max = 0;            // most nodes inside in any frame
-  EnergyDrift drift;                        // per frame
-  bool external_work = false;               // wind or driven pins: energy may rise on purpose
-  std::optional<double> settling_time;      // s
+  double penetration_max = 0.0;         // m, deepest over all frames (0 without a sphere)
+  double penetration_mean_max = 0.0;    // m, largest per-frame mean depth
+  int penetration_count_max = 0;        // most nodes inside in any frame
+  EnergyDrift drift;                    // per frame
+  bool external_work = false;           // wind or driven pins: energy may rise on purpose
+  std::optional<double> settling_time;  // s
   double max_strain = 0.0;
 };
 
 // How far two engines' runs of the same scene are apart.
 struct PairMetrics {
   std::string a, b;
-  NodeDistance drape;        // last frames, node i against node i
-  SurfaceDistance surface;   // last frames, topology-free
+  NodeDistance drape;           // last frames, node i against node i
+  SurfaceDistance surface;      // last frames, topology-free
   double sag_difference = 0.0;  // |sag_lowest(a) - sag_lowest(b)|, m
   // Max over frames of the per-frame RMS node distance; only when both sampled the same times.
   std::optional<double> trajectory_rms_max;

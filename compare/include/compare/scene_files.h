@@ -5,7 +5,8 @@
 
 namespace springcheck {
 
-// The *.json files of a directory and its subdirectories, sorted by path (so runs and tables come in a fixed order).
+// The *.json files of a directory and its subdirectories, sorted by path (so runs and tables come
+// in a fixed order).
 [[nodiscard]] std::expected<std::vector<std::string>, std::string> sceneFiles(
     const std::string& dir);
 

@@ -16,17 +16,17 @@ mysim::Scene oscillatorScene(double stiffness, double mass, double damping_ratio
 //   symplectic Euler, Verlet: h w < 2 (undamped);  RK4: h w <= 2 sqrt(2) (undamped);
 //   forward Euler: |1 + h lambda| <= 1 <=> h <= 2 zeta / w = c / k;
 //   backward Euler: any h (infinity);  trapezoidal (Heun) and dopri5: no finite line (none).
-std::optional<double> theoryStableStep(const std::string& integrator, double stiffness,
-                                       double mass, double damping_ratio);
+std::optional<double> theoryStableStep(const std::string& integrator, double stiffness, double mass,
+                                       double damping_ratio);
 
 struct StabilityLimit {
-  std::string system;      // "oscillator" or the scene's name
+  std::string system;  // "oscillator" or the scene's name
   std::string integrator;
-  double stiffness = 0.0;  // N/m
-  double mass = 0.0;       // kg
-  double h_stable = 0.0;   // largest step found stable, s
-  double h_unstable = 0.0; // smallest step found unstable (0 if none up to the range's top), s
-  std::string status;      // "bracketed", "stable-at-max", "unstable-at-min"
+  double stiffness = 0.0;   // N/m
+  double mass = 0.0;        // kg
+  double h_stable = 0.0;    // largest step found stable, s
+  double h_unstable = 0.0;  // smallest step found unstable (0 if none up to the range's top), s
+  std::string status;       // "bracketed", "stable-at-max", "unstable-at-min"
   std::optional<double> theory;  // s
 };
 
@@ -35,7 +35,7 @@ struct StabilitySettings {
   double energy_bound = 10.0;  // stable: total energy never above this many times its start
   double h_min_omega = 1e-3;   // search range, as h w
   double h_max_omega = 100.0;
-  double precision = 0.01;     // stop when h_unstable / h_stable < 1 + precision
+  double precision = 0.01;  // stop when h_unstable / h_stable < 1 + precision
 };
 
 // Largest stable step by bisection (in log h) for one integrator on the oscillator.

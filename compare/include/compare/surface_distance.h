@@ -1,8 +1,7 @@
 #pragma once
-#include <vector>
-
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross products
+#include <vector>
 
 #include "compare/drape_metric.h"
 

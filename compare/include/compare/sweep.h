@@ -14,13 +14,13 @@ namespace springcheck {
 struct SweepSpec {
   std::string source;
   std::string name;
-  std::vector<std::string> scenes;           // paths, resolved against the spec's directory
-  std::vector<std::string> engines;          // "mysim" and/or Bullet engines
-  std::vector<std::string> integrators;      // mysim integrators
-  std::vector<double> dts;                   // s
-  std::vector<double> stiffness_scales{1.0}; // every spring's stiffness times this
-  std::optional<double> duration;            // s, overrides the scenes'
-  double sample_interval = 0.0;              // s, a multiple of every dt: frames line up
+  std::vector<std::string> scenes;            // paths, resolved against the spec's directory
+  std::vector<std::string> engines;           // "mysim" and/or Bullet engines
+  std::vector<std::string> integrators;       // mysim integrators
+  std::vector<double> dts;                    // s
+  std::vector<double> stiffness_scales{1.0};  // every spring's stiffness times this
+  std::optional<double> duration;             // s, overrides the scenes'
+  double sample_interval = 0.0;               // s, a multiple of every dt: frames line up
   // The reference every row is measured against: the scene's closed form, or a converged run
   // (`reference_integrator` at the smallest dt / `reference_refine`).
   bool reference_closed_form = false;
@@ -54,7 +54,7 @@ struct SweepOptions {
   int jobs = 1;
   int shard_index = 0;  // run cases with id % shard_count == shard_index
   int shard_count = 1;
-  bool resume = true;   // keep rows already in the output file and skip their cases
+  bool resume = true;  // keep rows already in the output file and skip their cases
   std::function<void(int done, int total)> progress = nullptr;
 };
 

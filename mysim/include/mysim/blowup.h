@@ -15,9 +15,9 @@ struct BlowUpLimits {
 
 // What stopped a run: when, at which step and which check.
 struct BlowUp {
-  double time = 0.0;     // s, the time of the first unhealthy state
+  double time = 0.0;  // s, the time of the first unhealthy state
   long step = 0;
-  std::string check;     // "non-finite", "strain", "energy", "linear-solver"
+  std::string check;  // "non-finite", "strain", "energy", "linear-solver"
   std::string detail;
 };
 

@@ -8,10 +8,10 @@ namespace mysim {
 // A single pendulum is a chain of two particles.
 struct ChainShape {
   int particles = 2;
-  double rest_length = 0.1;       // m, between neighbours
-  double particle_mass = 0.01;    // kg
-  double stiffness = 100.0;       // N/m
-  double damping = 0.0;           // N s/m along each spring
+  double rest_length = 0.1;     // m, between neighbours
+  double particle_mass = 0.01;  // kg
+  double stiffness = 100.0;     // N/m
+  double damping = 0.0;         // N s/m along each spring
   Vec3 origin = Vec3::Zero();
   Vec3 direction = Vec3::UnitX();  // unit vector
 };

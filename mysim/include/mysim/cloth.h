@@ -16,8 +16,8 @@ struct SpringParameters {
 struct ClothShape {
   int rows = 14;
   int cols = 14;
-  double width = 1.0;    // m, along the columns (x)
-  double height = 1.0;   // m, along the rows
+  double width = 1.0;           // m, along the columns (x)
+  double height = 1.0;          // m, along the rows
   double particle_mass = 0.01;  // kg
   bool hanging = false;  // false: rows run along -z (a horizontal sheet); true: along -y (vertical)
   Vec3 origin = Vec3::Zero();  // position of particle (0, 0)

@@ -1,8 +1,7 @@
 #pragma once
+#include <Eigen/Core>
 #include <ostream>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "mysim/model.h"
 

@@ -11,8 +11,8 @@ namespace mysim {
 
 // What one call to step() did, summed over a run.
 struct StepCounts {
-  long accepted = 0;           // accepted (sub)steps
-  long rejected = 0;           // rejected trial steps (adaptive only)
+  long accepted = 0;  // accepted (sub)steps
+  long rejected = 0;  // rejected trial steps (adaptive only)
   long derivative_evaluations = 0;
   long linear_iterations = 0;  // CG iterations (backward Euler only)
   long solver_failures = 0;    // linear solves that did not reach their tolerance
@@ -22,10 +22,10 @@ struct StepCounts {
 
 struct IntegratorSettings {
   std::string name = "rk4";
-  double abs_tolerance = 1e-6;       // adaptive: per-component absolute error bound
-  double rel_tolerance = 1e-6;       // adaptive: relative error bound
-  double cg_tolerance = 1e-8;        // backward Euler: CG relative residual
-  int cg_max_iterations = 1000;      // backward Euler
+  double abs_tolerance = 1e-6;   // adaptive: per-component absolute error bound
+  double rel_tolerance = 1e-6;   // adaptive: relative error bound
+  double cg_tolerance = 1e-8;    // backward Euler: CG relative residual
+  int cg_max_iterations = 1000;  // backward Euler
 };
 
 // Advances a state by h. Owns its scratch buffers (allocated on first use, reused after), so one

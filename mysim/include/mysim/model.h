@@ -20,13 +20,13 @@ struct GridShape {
 // The built model: what does not change while stepping. Sizes in comments, N particles.
 // Optional force terms are absent unless the scene names them, and then cost nothing.
 struct Model {
-  Vector mass;                       // (N) kg, > 0
-  std::vector<char> pinned;          // (N) 1 = pinned: follows pin_motion from its start position
-  Vector start_position;             // (3N) m
-  Vector start_velocity;             // (3N) m/s
-  std::vector<Spring> springs;       // flat list, any topology
-  Vec3 gravity = Vec3::Zero();       // m/s^2
-  double drag = 0.0;                 // N s/m, viscous drag -drag * v on every particle
+  Vector mass;                  // (N) kg, > 0
+  std::vector<char> pinned;     // (N) 1 = pinned: follows pin_motion from its start position
+  Vector start_position;        // (3N) m
+  Vector start_velocity;        // (3N) m/s
+  std::vector<Spring> springs;  // flat list, any topology
+  Vec3 gravity = Vec3::Zero();  // m/s^2
+  double drag = 0.0;            // N s/m, viscous drag -drag * v on every particle
   std::optional<Wind> wind;
   std::optional<PinMotion> pin_motion;
   std::optional<Sphere> sphere;

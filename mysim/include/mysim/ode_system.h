@@ -1,8 +1,7 @@
 #pragma once
+#include <Eigen/Core>
 #include <optional>
 #include <string>
-
-#include <Eigen/Core>
 
 #include "mysim/energy.h"
 #include "mysim/state.h"

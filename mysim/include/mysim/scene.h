@@ -51,9 +51,9 @@ struct Scene {
   std::optional<Sphere> sphere;
 
   IntegratorSettings integrator;
-  double dt = 0.04;                // s
-  double duration = 10.0;          // s
-  double sample_interval = 0.0;    // s between trajectory frames; 0 = about 200 frames a run
+  double dt = 0.04;              // s
+  double duration = 10.0;        // s
+  double sample_interval = 0.0;  // s between trajectory frames; 0 = about 200 frames a run
   BlowUpLimits limits;
   ClassicSettings classic;
 };

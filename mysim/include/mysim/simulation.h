@@ -1,9 +1,8 @@
 #pragma once
+#include <Eigen/Core>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "mysim/blowup.h"
 #include "mysim/energy.h"
@@ -18,13 +17,13 @@ struct RunRecord {
   std::string engine;
   std::string integrator;
   double dt = 0.0;
-  double duration = 0.0;          // requested
-  long steps = 0;                 // scene steps taken
+  double duration = 0.0;  // requested
+  long steps = 0;         // scene steps taken
   StepCounts counts;
-  double wall_seconds = 0.0;      // stepping alone: no set-up, sampling or output
-  std::vector<double> times;      // (F) s
-  std::vector<ParticleRows> frames;  // (F) sampled states, finite only
-  std::vector<EnergyTerms> energies; // (F) where the system has energy
+  double wall_seconds = 0.0;          // stepping alone: no set-up, sampling or output
+  std::vector<double> times;          // (F) s
+  std::vector<ParticleRows> frames;   // (F) sampled states, finite only
+  std::vector<EnergyTerms> energies;  // (F) where the system has energy
   std::optional<BlowUp> blowup;
   std::vector<std::string> notes;  // how the engine differs from the scene as written, if at all
 };

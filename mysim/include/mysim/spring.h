@@ -44,8 +44,8 @@ Mat3 springVelocityJacobian(const Vec3& xi, const Vec3& xj, double c);
 // and J w = k (a w + (1 - a) u (u.w)). Same values as the Mat3 functions (tested), a fraction of
 // the arithmetic: this is what the solver's hot loop uses.
 struct ImplicitSpringBlock {
-  double alpha, beta;   // h C + h^2 J = alpha I + beta u u^T
-  double ja, jb;        // J = ja I + jb u u^T
+  double alpha, beta;  // h C + h^2 J = alpha I + beta u u^T
+  double ja, jb;       // J = ja I + jb u u^T
   Vec3 u;
   Mat3 matrix() const { return alpha * Mat3::Identity() + beta * u * u.transpose(); }
   Vec3 timesJ(const Vec3& w) const { return ja * w + jb * u.dot(w) * u; }

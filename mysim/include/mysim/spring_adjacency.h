@@ -17,9 +17,9 @@ struct SpringAdjacency {
   struct Parameters {
     double rest_length, stiffness, damping;
   };
-  std::vector<int> offsets;       // (N + 1) incidences of particle p: [offsets[p], offsets[p+1])
-  std::vector<int> other;         // (2S) the particle at the far end
-  std::vector<int> parameter;     // (2S) index into `parameters`
+  std::vector<int> offsets;    // (N + 1) incidences of particle p: [offsets[p], offsets[p+1])
+  std::vector<int> other;      // (2S) the particle at the far end
+  std::vector<int> parameter;  // (2S) index into `parameters`
   std::vector<Parameters> parameters;
 
   static SpringAdjacency build(int particle_count, const std::vector<Spring>& springs);

@@ -18,10 +18,10 @@ struct EngineView {
   std::unique_ptr<mysim::OdeSystem> system;
   std::unique_ptr<mysim::Integrator> integrator;
   mysim::State state;
-  std::string refused;                     // why this engine cannot run the scene, if it cannot
-  std::optional<double> blowup_time;       // s
+  std::string refused;                // why this engine cannot run the scene, if it cannot
+  std::optional<double> blowup_time;  // s
   std::string blowup_check;
-  double step_seconds = 0.0;               // wall time of the last frame's stepping
+  double step_seconds = 0.0;  // wall time of the last frame's stepping
   bool running() const { return refused.empty() && !blowup_time; }
 };
 

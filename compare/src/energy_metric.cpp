@@ -12,15 +12,17 @@ EnergyDrift energyDrift(const std::vector<mysim::EnergyTerms>& energies) {
   d.reference = std::abs(e0.total());
   for (const mysim::EnergyTerms& e : energies) d.reference = std::max(d.reference, e.kinetic);
   const double ref = d.reference > 0 ? d.reference : 1.0;
-  double lowest = e0.total();
+  // The total less the work put in from outside: what damping alone may only lower.
+  auto net = [](const mysim::EnergyTerms& e) { return e.total() - e.external_work; };
+  double lowest = net(e0);
   for (const mysim::EnergyTerms& e : energies) {
     d.kinetic.push_back((e.kinetic - e0.kinetic) / ref);
     d.gravity.push_back((e.gravity - e0.gravity) / ref);
     d.spring.push_back((e.spring - e0.spring) / ref);
     d.total.push_back((e.total() - e0.total()) / ref);
     d.max_abs_total = std::max(d.max_abs_total, std::abs(d.total.back()));
-    d.max_rise = std::max(d.max_rise, e.total() - lowest);
-    lowest = std::min(lowest, e.total());
+    d.max_rise = std::max(d.max_rise, net(e) - lowest);
+    lowest = std::min(lowest, net(e));
   }
   return d;
 }

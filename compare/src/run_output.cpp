@@ -126,11 +126,11 @@ std::expected<void, std::string> writeRunOutputs(const std::string& dir_name,
     done = writeFile(dir, "energy.csv", [&](const fs::path& p) {
       return writeText(p, [&](std::ostream& out) {
         out.precision(17);
-        out << "t,kinetic,gravity,spring,total\n";
+        out << "t,kinetic,gravity,spring,total,external_work\n";
         for (std::size_t f = 0; f < r.energies.size(); ++f) {
           const mysim::EnergyTerms& e = r.energies[f];
           out << r.times[f] << ',' << e.kinetic << ',' << e.gravity << ',' << e.spring << ','
-              << e.total() << '\n';
+              << e.total() << ',' << e.external_work << '\n';
         }
       });
     });

@@ -180,6 +180,39 @@ std::optional<OdeSystem::Unhealthy> ParticleSystem::checkHealth(const State& sta
   return std::nullopt;
 }
 
+double ParticleSystem::pinPower(const State& state) const {
+  const int n = particleCount();
+  const auto x = state.y.head(3 * n);
+  const auto v = state.y.tail(3 * n);
+  double power = 0.0;
+  for (int p = 0; p < n; ++p) {
+    if (!model_.pinned[p]) continue;
+    Vec3 on_pin = Vec3::Zero();
+    for (int e = adjacency_.offsets[p]; e < adjacency_.offsets[p + 1]; ++e) {
+      const int q = adjacency_.other[e];
+      const SpringAdjacency::Parameters& sp = adjacency_.parameters[adjacency_.parameter[e]];
+      on_pin += springForce(x.segment<3>(3 * p), x.segment<3>(3 * q), v.segment<3>(3 * p),
+                            v.segment<3>(3 * q), sp.rest_length, sp.stiffness, sp.damping);
+    }
+    power -= on_pin.dot(v.segment<3>(3 * p));
+  }
+  return power;
+}
+
+double ParticleSystem::externalWork(const State& before, const State& after) const {
+  double work = 0.0;
+  if (model_.wind) {
+    const double t_mid = 0.5 * (before.t + after.t);
+    for (int p = 0; p < particleCount(); ++p) {
+      if (model_.pinned[p]) continue;
+      work += windForce(*model_.wind, p, t_mid)
+                  .dot(after.y.segment<3>(3 * p) - before.y.segment<3>(3 * p));
+    }
+  }
+  if (model_.pin_motion) work += 0.5 * (pinPower(before) + pinPower(after)) * (after.t - before.t);
+  return work;
+}
+
 std::optional<EnergyTerms> ParticleSystem::energy(const State& state) const {
   const int n3 = 3 * particleCount();
   return mechanicalEnergy(model_, state.y.head(n3), state.y.tail(n3));

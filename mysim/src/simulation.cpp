@@ -11,10 +11,13 @@ long stepCount(const RunSettings& settings) {
   return std::max(1L, std::lround(settings.duration / settings.dt));
 }
 
-void recordFrame(OdeSystem& system, const State& state, RunRecord& record) {
+void recordFrame(OdeSystem& system, const State& state, double external_work, RunRecord& record) {
   record.times.push_back(state.t);
   record.frames.push_back(system.particleRows(state));
-  if (auto e = system.energy(state)) record.energies.push_back(*e);
+  if (auto e = system.energy(state)) {
+    e->external_work = external_work;
+    record.energies.push_back(*e);
+  }
 }
 
 }  // namespace
@@ -34,20 +37,27 @@ RunRecord simulate(OdeSystem& system, Integrator& integrator, State state,
   record.duration = settings.duration;
   const long steps = stepCount(settings);
   const long stride = sampleStride(settings);
-  recordFrame(system, state, record);
+  // External work, step by step; only when the system has an external driver (a scene pays only
+  // for what it names).
+  const bool driven = system.hasExternalDriver();
+  State before;
+  double external_work = 0.0;
+  recordFrame(system, state, external_work, record);
 
   Clock::duration stepping{};
   for (long step = 1; step <= steps; ++step) {
+    if (driven) before = state;
     const auto start = Clock::now();
     record.counts += integrator.step(system, state, settings.dt);
     stepping += Clock::now() - start;
     record.steps = step;
+    if (driven) external_work += system.externalWork(before, state);
     // One health check a step: the first bad state is reported, never written.
     if (auto bad = system.checkHealth(state)) {
       record.blowup = BlowUp{state.t, step, bad->check, bad->detail};
       break;
     }
-    if (step % stride == 0 || step == steps) recordFrame(system, state, record);
+    if (step % stride == 0 || step == steps) recordFrame(system, state, external_work, record);
   }
   record.wall_seconds = std::chrono::duration<double>(stepping).count();
   return record;

@@ -12,8 +12,9 @@ struct EnergyDrift {
   double reference = 0.0;  // E_ref, J
   std::vector<double> kinetic, gravity, spring, total;
   double max_abs_total = 0.0;  // max |total drift|
-  // Largest rise of the total above its lowest earlier value, in J. A damped scene without
-  // external work must not rise beyond round-off and the integrator's own error.
+  // Largest rise of (total - external work) above its lowest earlier value, in J: wind and
+  // moving pins are accounted for, so a damped scene must not rise beyond round-off and the
+  // integrator's own error, whatever drives it.
   double max_rise = 0.0;
 };
 EnergyDrift energyDrift(const std::vector<mysim::EnergyTerms>& energies);

@@ -39,6 +39,12 @@ class OdeSystem {
   // Energy terms where the system has them.
   virtual std::optional<EnergyTerms> energy(const State& state) const = 0;
 
+  // Whether anything drives the system from outside (wind, moving pins); only then is work
+  // tracked, with externalWork() over each step.
+  virtual bool hasExternalDriver() const { return false; }
+  // Work done on the system by its external drivers from `before` to `after` (one step), J.
+  virtual double externalWork(const State& /*before*/, const State& /*after*/) const { return 0.0; }
+
   // Rows (x, y, z, vx, vy, vz), one per particle, for output.
   virtual Eigen::Matrix<double, Eigen::Dynamic, 6> particleRows(const State& state) = 0;
 };

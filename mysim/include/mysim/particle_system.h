@@ -23,6 +23,11 @@ class ParticleSystem final : public OdeSystem {
   ParticleSystem* particles() override { return this; }
   std::optional<Unhealthy> checkHealth(const State& state) const override;
   std::optional<EnergyTerms> energy(const State& state) const override;
+  bool hasExternalDriver() const override { return model_.wind || model_.pin_motion; }
+  // Wind: its force is constant within a gust window, so over a step inside one window the work
+  // is exactly F . (x_after - x_before) (evaluated at the step's midpoint time). Moving pins:
+  // the trapezoidal rule on their power -sum F_springs_on_pin . v_pin.
+  double externalWork(const State& before, const State& after) const override;
   Eigen::Matrix<double, Eigen::Dynamic, 6> particleRows(const State& state) override;
 
   State initialState() const;
@@ -47,6 +52,7 @@ class ParticleSystem final : public OdeSystem {
 
  private:
   void afterStepConst(State& state) const;
+  double pinPower(const State& state) const;
   // The force loop; with `accelerations`, divided by mass (pinned: the prescribed acceleration)
   // in the same pass.
   void gather(double t, Eigen::Ref<const Vector> x, Eigen::Ref<const Vector> v,

@@ -264,30 +264,26 @@ def figure_drape(results):
     return fig
 
 
+def plot_series(ax, path, column, scale, ylabel, title):
+    """One line per engine of a series.csv column against time."""
+    series = defaultdict(list)
+    for r in read_csv(path):
+        series[r["engine"]].append((number(r["t"]), scale * number(r[column])))
+    for engine, pts in sorted(series.items()):
+        ax.plot(*zip(*pts), label=engine, lw=1.2)
+    ax.set_xlabel("time t [s]")
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8)
+
+
 def figure_sag_penetration(results):
     fig, axes = plt.subplots(1, 2, figsize=(12, 5))
-    sag = read_csv(os.path.join(results, "suite", "cloth_hanging", "series.csv"))
-    series = defaultdict(list)
-    for r in sag:
-        series[r["engine"]].append((number(r["t"]), number(r["sag_lowest"])))
-    for engine, pts in sorted(series.items()):
-        axes[0].plot(*zip(*pts), label=engine, lw=1.2)
-    axes[0].set_xlabel("time t [s]")
-    axes[0].set_ylabel("lowest point below the pins [m]")
-    axes[0].set_title("sag over time: cloth_hanging")
-    axes[0].grid(True, alpha=0.3)
-    axes[0].legend(fontsize=8)
-    pen = read_csv(os.path.join(results, "suite", "cloth_on_sphere", "series.csv"))
-    series = defaultdict(list)
-    for r in pen:
-        series[r["engine"]].append((number(r["t"]), 1e3 * number(r["penetration_deepest"])))
-    for engine, pts in sorted(series.items()):
-        axes[1].plot(*zip(*pts), label=engine, lw=1.2)
-    axes[1].set_xlabel("time t [s]")
-    axes[1].set_ylabel("deepest node inside the sphere [mm]")
-    axes[1].set_title("sphere penetration over time: cloth_on_sphere")
-    axes[1].grid(True, alpha=0.3)
-    axes[1].legend(fontsize=8)
+    plot_series(axes[0], os.path.join(results, "suite", "cloth_hanging", "series.csv"), "sag_lowest", 1.0,
+                "lowest point below the pins [m]", "sag over time: cloth_hanging")
+    plot_series(axes[1], os.path.join(results, "suite", "cloth_on_sphere", "series.csv"), "penetration_deepest",
+                1e3, "deepest node inside the sphere [mm]", "sphere penetration over time: cloth_on_sphere")
     fig.tight_layout()
     return fig
 

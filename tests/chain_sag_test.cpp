@@ -57,11 +57,7 @@ INSTANTIATE_TEST_SUITE_P(ExplicitAndImplicit, ChainAtRest,
                          ::testing::Values(std::pair{"rk4", 0.005},
                                            std::pair{"backward-euler", 0.05},
                                            std::pair{"verlet", 0.002}),
-                         [](const auto& info) {
-                           std::string name = info.param.first;
-                           std::erase(name, '-');
-                           return name;
-                         });
+                         [](const auto& info) { return testing::identifier(info.param.first); });
 
 }  // namespace
 }  // namespace mysim

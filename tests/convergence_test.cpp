@@ -49,11 +49,7 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(OrderCase{"euler", 1, 0.01}, OrderCase{"trapezoidal", 2, 0.02},
                       OrderCase{"rk4", 4, 0.1}, OrderCase{"symplectic-euler", 1, 0.01},
                       OrderCase{"verlet", 2, 0.02}, OrderCase{"backward-euler", 1, 0.01}),
-    [](const auto& info) {
-      std::string name = info.param.integrator;
-      std::erase(name, '-');
-      return name;
-    });
+    [](const auto& info) { return testing::identifier(info.param.integrator); });
 
 // Energy of the undamped oscillator over a run: the largest relative deviation from the start.
 double worstEnergyDrift(const std::string& integrator, double h, long steps, double* end_ratio) {

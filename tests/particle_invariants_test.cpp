@@ -93,11 +93,7 @@ TEST_P(EveryIntegrator, MomentumIsConservedWithoutExternalForces) {
 }
 
 INSTANTIATE_TEST_SUITE_P(All, EveryIntegrator, ::testing::ValuesIn(testing::particleIntegrators()),
-                         [](const auto& info) {
-                           std::string name = info.param;
-                           std::erase(name, '-');
-                           return name;
-                         });
+                         testing::IntegratorParamName());
 
 }  // namespace
 }  // namespace mysim

@@ -63,11 +63,7 @@ TEST_P(ClothOnSphere, NeverEntersTheSphereAndComesToRestWithoutJitter) {
 
 INSTANTIATE_TEST_SUITE_P(ExplicitAndImplicit, ClothOnSphere,
                          ::testing::Values("rk4", "symplectic-euler", "backward-euler"),
-                         [](const auto& info) {
-                           std::string name = info.param;
-                           std::erase(name, '-');
-                           return name;
-                         });
+                         testing::IntegratorParamName());
 
 }  // namespace
 }  // namespace mysim

@@ -2,6 +2,7 @@
 // Small models shared by the tests.
 #include <cmath>
 #include <memory>
+#include <string>
 
 #include "mysim/integrator.h"
 #include "mysim/particle_system.h"
@@ -67,5 +68,19 @@ inline const std::vector<std::string>& particleIntegrators() {
       "euler", "trapezoidal", "rk4", "symplectic-euler", "verlet", "backward-euler", "dopri5"};
   return names;
 }
+
+// GoogleTest parameter names must be identifiers: "backward-euler" -> "backwardeuler".
+inline std::string identifier(std::string name) {
+  std::erase(name, '-');
+  return name;
+}
+
+// Names a suite whose parameter is an integrator name.
+struct IntegratorParamName {
+  template <typename Info>
+  std::string operator()(const Info& info) const {
+    return identifier(info.param);
+  }
+};
 
 }  // namespace mysim::testing

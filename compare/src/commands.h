@@ -1,10 +1,24 @@
 #pragma once
 #include <CLI/CLI.hpp>
+#include <cstdlib>
+#include <string>
 
 namespace springcheck {
 
 // Exit codes of the springcheck executable.
 enum ExitCode : int { kOk = 0, kFailure = 1, kBadInput = 2, kBlowUp = 3 };
+
+// A flag value that must be a number > 0 (CLI11's PositiveNumber prints its whole double range).
+inline const CLI::Validator kPositive(
+    [](std::string& text) -> std::string {
+      char* end = nullptr;
+      const double value = std::strtod(text.c_str(), &end);
+      if (end == text.c_str() || *end != '\0' || !(value > 0.0)) {
+        return "expected a number > 0, got " + text;
+      }
+      return "";
+    },
+    "> 0");
 
 // Each registers a subcommand whose callback stores its exit code in `exit_code`.
 void addRunCommand(CLI::App& app, int& exit_code);

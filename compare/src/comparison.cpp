@@ -24,7 +24,7 @@ std::expected<Comparison, std::string> compareScene(const mysim::Scene& scene,
   for (const std::string& engine : engines) {
     auto record = runEngine(scene, engine);
     if (!record) {
-      c.refused.push_back(engine + ": " + record.error());
+      c.refused.push_back({engine, record.error()});
       continue;
     }
     record->engine = engine;
@@ -54,7 +54,7 @@ std::string format(const std::optional<double>& v) {
 void printComparison(std::ostream& out, const Comparison& c) {
   out << "scene " << c.scene.name << " (" << c.scene.source << "), dt " << c.scene.dt << " s, "
       << c.scene.duration << " s\n";
-  for (const std::string& r : c.refused) out << "  refused: " << r << '\n';
+  for (const Comparison::Refusal& r : c.refused) out << "  refused: " << r.reason << '\n';
   char line[512];
   std::snprintf(line, sizeof line, "  %-30s", "per engine");
   out << line;
@@ -151,7 +151,10 @@ std::expected<void, std::string> writeComparison(const std::string& dir, const C
             {"scene_file", c.scene.source},
             {"dt", c.scene.dt},
             {"duration", c.scene.duration},
-            {"refused", c.refused}};
+            {"refused", json::array()}};
+  for (const Comparison::Refusal& r : c.refused) {
+    j["refused"].push_back({{"engine", r.engine}, {"reason", r.reason}});
+  }
   j["engines"] = json::array();
   for (const EngineMetrics& m : c.engines) j["engines"].push_back(metricsJson(m));
   j["pairs"] = json::array();

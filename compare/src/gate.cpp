@@ -18,12 +18,11 @@ namespace {
 
 CheckResult evaluate(const ToleranceCheck& check, const Comparison& c) {
   CheckResult r{check, std::nullopt, false, ""};
-  for (const std::string& refusal : c.refused) {
-    for (const std::string& engine : check.engines) {
-      if (refusal.rfind(engine + ":", 0) == 0) {
-        r.problem = "refused: " + refusal;
-        return r;
-      }
+  for (const Comparison::Refusal& refusal : c.refused) {
+    if (std::find(check.engines.begin(), check.engines.end(), refusal.engine) !=
+        check.engines.end()) {
+      r.problem = "refused: " + refusal.reason;
+      return r;
     }
   }
   auto metrics_of = [&](const std::string& engine) -> const EngineMetrics* {

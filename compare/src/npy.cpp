@@ -6,6 +6,14 @@ namespace springcheck {
 
 bool writeNpy(const std::string& path, const std::vector<long>& shape,
               const std::vector<double>& data) {
+  return writeNpy(path, shape, [&](std::ostream& out) {
+    out.write(reinterpret_cast<const char*>(data.data()),
+              static_cast<std::streamsize>(data.size() * sizeof(double)));
+  });
+}
+
+bool writeNpy(const std::string& path, const std::vector<long>& shape,
+              const std::function<void(std::ostream&)>& write_data) {
   std::string dims;
   for (long d : shape) dims += std::to_string(d) + ", ";
   if (shape.size() > 1) dims.resize(dims.size() - 2);  // (n,) for 1-D, (a, b) otherwise
@@ -21,8 +29,7 @@ bool writeNpy(const std::string& path, const std::vector<long>& shape,
   const char len_bytes[2] = {static_cast<char>(length & 0xff), static_cast<char>(length >> 8)};
   out.write(len_bytes, 2);
   out.write(header.data(), static_cast<std::streamsize>(header.size()));
-  out.write(reinterpret_cast<const char*>(data.data()),
-            static_cast<std::streamsize>(data.size() * sizeof(double)));
+  write_data(out);
   return static_cast<bool>(out);
 }
 

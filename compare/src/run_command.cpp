@@ -72,9 +72,9 @@ void addRunCommand(CLI::App& app, int& exit_code) {
   run->add_option("--engine", options->engine, "Engine to run the scene in")->capture_default_str();
   run->add_option("--integrator", options->integrator, "Integrator (overrides the scene)");
   run->add_option("--dt", options->dt, "Step in s (overrides the scene)")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
   run->add_option("--duration", options->duration, "Duration in s (overrides the scene)")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
   run->add_option("--classic-iterations", options->classic_iterations,
                   "bullet-classic solver passes per step (overrides bullet.classic_iterations)")
       ->check(CLI::Range(1, 10000));

@@ -107,15 +107,15 @@ std::expected<void, std::string> writeRunOutputs(const std::string& dir_name,
   if (!done) return done;
 
   const long frames = static_cast<long>(r.frames.size()), particles = last.rows();
-  std::vector<double> flat;
-  flat.reserve(frames * particles * 6);
-  for (const mysim::ParticleRows& f : r.frames) {
-    for (int i = 0; i < particles; ++i) {
-      for (int k = 0; k < 6; ++k) flat.push_back(f(i, k));
-    }
-  }
   done = writeFile(dir, "trajectory.npy", [&](const fs::path& p) {
-    return writeNpy(p.string(), {frames, particles, 6}, flat);
+    return writeNpy(p.string(), {frames, particles, 6}, [&](std::ostream& out) {
+      for (const mysim::ParticleRows& f : r.frames) {
+        // Frames are column-major (N x 6); the file wants each particle's six values together.
+        const Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor> rows = f;
+        out.write(reinterpret_cast<const char*>(rows.data()),
+                  static_cast<std::streamsize>(rows.size() * sizeof(double)));
+      }
+    });
   });
   if (!done) return done;
   done = writeFile(dir, "times.npy",

@@ -18,11 +18,11 @@ std::optional<double> settlingTime(const mysim::RunRecord& run, double relative_
 
 double maxStrainOverRun(const mysim::Model& model, const mysim::RunRecord& run) {
   double worst = 0.0;
+  mysim::Vector x;
   for (const mysim::ParticleRows& frame : run.frames) {
-    for (const mysim::Spring& s : model.springs) {
-      const double l = (frame.row(s.j).head<3>() - frame.row(s.i).head<3>()).norm();
-      worst = std::max(worst, std::abs(l / s.rest_length - 1.0));
-    }
+    x.resize(3 * frame.rows());
+    for (int p = 0; p < frame.rows(); ++p) x.segment<3>(3 * p) = frame.row(p).head<3>().transpose();
+    worst = std::max(worst, mysim::maxSpringStrain(model.springs, x));
   }
   return worst;
 }

@@ -56,7 +56,7 @@ void addViewCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--engines", o->engines, "Comma-separated engines, one viewport each")
       ->capture_default_str();
   cmd->add_option("--integrator", o->integrator, "mysim integrator (i cycles)");
-  cmd->add_option("--dt", o->dt, "Step in s (overrides the scenes)")->check(CLI::PositiveNumber);
+  cmd->add_option("--dt", o->dt, "Step in s (overrides the scenes)")->check(kPositive);
   cmd->add_option("--frames", o->frames, "Run this many frames without a person, then close");
   cmd->add_option("--screenshot", o->screenshot, "With --frames: save the last frame as PNG");
   cmd->callback([o, &exit_code] { exit_code = view(*o); });

@@ -1,6 +1,7 @@
 #include "mysim/spring.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace mysim {
 
@@ -18,6 +19,15 @@ const char* familyName(SpringFamily family) {
       return "custom";
   }
   return "custom";
+}
+
+double maxSpringStrain(const std::vector<Spring>& springs, Eigen::Ref<const Vector> x) {
+  double worst = 0.0;
+  for (const Spring& s : springs) {
+    const double l = (x.segment<3>(3 * s.j) - x.segment<3>(3 * s.i)).norm();
+    worst = std::max(worst, std::abs(l / s.rest_length - 1.0));
+  }
+  return worst;
 }
 
 Vec3 springForce(const Vec3& xi, const Vec3& xj, const Vec3& vi, const Vec3& vj, double rest,

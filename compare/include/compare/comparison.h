@@ -13,7 +13,11 @@ struct Comparison {
   mysim::Scene scene;
   mysim::Model model;
   std::vector<EngineRun> runs;
-  std::vector<std::string> refused;  // "engine: why" for engines that cannot run the scene
+  // Engines that cannot run the scene, with their message (which names engine and field).
+  struct Refusal {
+    std::string engine, reason;
+  };
+  std::vector<Refusal> refused;
   std::vector<EngineMetrics> engines;
   std::vector<PairMetrics> pairs;  // every pair of runs that did not blow up
 };

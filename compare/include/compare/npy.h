@@ -1,4 +1,6 @@
 #pragma once
+#include <functional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -8,5 +10,10 @@ namespace springcheck {
 // with no extra package. `shape` is C order; the product of its entries must be data.size().
 [[nodiscard]] bool writeNpy(const std::string& path, const std::vector<long>& shape,
                             const std::vector<double>& data);
+
+// The same, with the data streamed by `write_data` (it must write exactly the shape's count of
+// float64 values), so a large trajectory is not copied into one buffer first.
+[[nodiscard]] bool writeNpy(const std::string& path, const std::vector<long>& shape,
+                            const std::function<void(std::ostream&)>& write_data);
 
 }  // namespace springcheck

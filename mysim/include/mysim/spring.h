@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <vector>
 
 #include "mysim/types.h"
 
@@ -17,6 +18,9 @@ struct Spring {
   double damping = 0.0;      // N s/m, acts on the relative speed along the spring only
   SpringFamily family = SpringFamily::Custom;
 };
+
+// Largest |l / rest - 1| over springs, for positions x (3N).
+double maxSpringStrain(const std::vector<Spring>& springs, Eigen::Ref<const Vector> x);
 
 // Force on particle i (particle j feels the opposite), d = xj - xi, l = |d|, u = d / l:
 //   F_i = [ k (l - rest) + c u.(vj - vi) ] u

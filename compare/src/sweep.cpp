@@ -82,10 +82,10 @@ std::expected<SweepSpec, std::string> parseSpec(const json& j, const std::string
   if (!scenes) return bad(scenes.error());
   for (std::size_t k = 0; k < scenes->size(); ++k) {
     const std::string path = (base / (*scenes)[k]).lexically_normal().string();
-    if (auto scene = mysim::loadScene(path); !scene) {
-      return bad("scenes[" + std::to_string(k) + "]: " + scene.error());
-    }
+    auto scene = mysim::loadScene(path);
+    if (!scene) return bad("scenes[" + std::to_string(k) + "]: " + scene.error());
     s.scenes.push_back(path);
+    s.loaded.emplace(path, std::move(*scene));
   }
   if (j.contains("engines")) {
     auto engines = stringList(j["engines"], "engines");
@@ -198,7 +198,10 @@ std::vector<SweepCase> expandSweep(const SweepSpec& spec) {
 }
 
 std::expected<mysim::Scene, std::string> caseScene(const SweepSpec& spec, const SweepCase& c) {
-  auto scene = mysim::loadScene(c.scene);
+  const auto cached = spec.loaded.find(c.scene);
+  auto scene = cached != spec.loaded.end()
+                   ? std::expected<mysim::Scene, std::string>(cached->second)
+                   : mysim::loadScene(c.scene);
   if (!scene) return scene;
   if (c.integrator != "-") scene->integrator.name = c.integrator;
   scene->dt = c.dt;

@@ -43,8 +43,10 @@ void ViewerSession::build() {
   // The circle takes first-order methods only: fall back to RK4 there.
   auto info = std::find_if(mysim::integratorCatalog().begin(), mysim::integratorCatalog().end(),
                            [&](const auto& i) { return i.name == integrator_; });
-  scene_.integrator.name =
-      (scene_.kind == mysim::SystemKind::Circle && info->needs_particles) ? "rk4" : integrator_;
+  scene_.integrator.name = (scene_.kind == mysim::SystemKind::Circle &&
+                            info != mysim::integratorCatalog().end() && info->needs_particles)
+                               ? "rk4"
+                               : integrator_;
   if (requested_dt_ > 0) scene_.dt = requested_dt_;
   dt_ = scene_.dt;
   if (wind_ && scene_.kind != mysim::SystemKind::Circle) {

@@ -1,6 +1,7 @@
 #pragma once
 #include <expected>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,13 +15,14 @@ namespace springcheck {
 struct SweepSpec {
   std::string source;
   std::string name;
-  std::vector<std::string> scenes;            // paths, resolved against the spec's directory
-  std::vector<std::string> engines;           // "mysim" and/or Bullet engines
-  std::vector<std::string> integrators;       // mysim integrators
-  std::vector<double> dts;                    // s
-  std::vector<double> stiffness_scales{1.0};  // every spring's stiffness times this
-  std::optional<double> duration;             // s, overrides the scenes'
-  double sample_interval = 0.0;               // s, a multiple of every dt: frames line up
+  std::vector<std::string> scenes;             // paths, resolved against the spec's directory
+  std::map<std::string, mysim::Scene> loaded;  // each scene, read and validated once
+  std::vector<std::string> engines;            // "mysim" and/or Bullet engines
+  std::vector<std::string> integrators;        // mysim integrators
+  std::vector<double> dts;                     // s
+  std::vector<double> stiffness_scales{1.0};   // every spring's stiffness times this
+  std::optional<double> duration;              // s, overrides the scenes'
+  double sample_interval = 0.0;                // s, a multiple of every dt: frames line up
   // The reference every row is measured against: the scene's closed form, or a converged run
   // (`reference_integrator` at the smallest dt / `reference_refine`).
   bool reference_closed_form = false;

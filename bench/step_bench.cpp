@@ -1,11 +1,12 @@
-// One step of each integrator on the cloth, and the same scene and step in each Bullet engine,
-// side by side in one run (docs/performance.md turns them into mysim / Bullet ratios).
+// One step of each integrator on the cloth, and the same scene and step in every other engine of
+// the registry (the Bullet twins), side by side in one run (docs/performance.md turns them into
+// mysim / Bullet ratios).
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
 #include "bench_scenes.h"
 #include "mysim/particle_system.h"
-#include "reference/bullet_engine.h"
+#include "compare/engine_registry.h"
 
 namespace {
 
@@ -36,23 +37,23 @@ void stepBenchmark(benchmark::State& state, const std::string& integrator, int n
   state.counters["dt"] = h;
 }
 
-void bulletBenchmark(benchmark::State& state, reference::BulletEngine engine, int n,
-                     double cg_tolerance) {
+void engineBenchmark(benchmark::State& state, const springcheck::EngineRegistry& registry,
+                     const std::string& engine, int n, double cg_tolerance) {
   const double h = bench::stableStep(n);
   mysim::Scene scene = bench::hangingCloth(n, "symplectic-euler", h);
   scene.integrator.cg_tolerance = cg_tolerance;
-  mysim::ParticleSystem system(mysim::buildModel(scene), scene.limits);
-  auto stepper = reference::makeBulletStepper(scene, system.model(), engine);
-  if (!stepper) {
-    state.SkipWithError(stepper.error().c_str());
+  const mysim::Model model = mysim::buildModel(scene);
+  auto instance = registry.build(engine, model, springcheck::runConfig(scene));
+  if (!instance) {
+    state.SkipWithError(instance.error().message.c_str());
     return;
   }
-  mysim::State s = system.initialState();
-  for (double t = 0; t < kSettleTime; t += h) (*stepper)->step(system, s, h);
-  for (auto _ : state) (*stepper)->step(system, s, h);
-  state.counters["particles"] = system.particleCount();
+  mysim::State s = instance->start;
+  for (double t = 0; t < kSettleTime; t += h) instance->stepper->step(s, h);
+  for (auto _ : state) instance->stepper->step(s, h);
+  state.counters["particles"] = model.particleCount();
   state.counters["ns_per_particle"] =
-      benchmark::Counter(system.particleCount(), benchmark::Counter::kIsIterationInvariantRate |
+      benchmark::Counter(model.particleCount(), benchmark::Counter::kIsIterationInvariantRate |
                                                      benchmark::Counter::kInvert);
   state.counters["dt"] = h;
 }
@@ -71,11 +72,13 @@ void registerAll() {
         ->Unit(benchmark::kMicrosecond)
         ->UseRealTime();
   }
-  for (auto engine : {reference::BulletEngine::Deformable, reference::BulletEngine::Implicit,
-                      reference::BulletEngine::Classic}) {
+  static const springcheck::EngineRegistry registry;
+  for (const springcheck::Engine& engine : registry.engines()) {
+    if (engine.kind == "mysim") continue;  // above, per integrator
+    const std::string name = engine.name;
     benchmark::RegisterBenchmark(
-        ("BM_BulletStep/" + std::string(reference::bulletEngineName(engine)) + "/32").c_str(),
-        [engine](benchmark::State& st) { bulletBenchmark(st, engine, 32, kCgTolerance); })
+        ("BM_BulletStep/" + name + "/32").c_str(),
+        [name](benchmark::State& st) { engineBenchmark(st, registry, name, 32, kCgTolerance); })
         ->Unit(benchmark::kMicrosecond)
         ->UseRealTime();
   }

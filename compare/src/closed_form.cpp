@@ -17,9 +17,9 @@ double ellipticK(double k) {
 
 namespace {
 
-std::optional<ClosedFormError> circleError(const mysim::Scene& scene, const mysim::RunRecord& run) {
+std::optional<ClosedFormError> circleError(const mysim::Model& model, const mysim::RunRecord& run) {
   double worst = 0.0;
-  const Eigen::Vector2d s = scene.circle_start;
+  const Eigen::Vector2d s = model.circle_start;
   for (std::size_t f = 0; f < run.frames.size(); ++f) {
     const double t = run.times[f];
     const Eigen::Vector2d exact(s.x() * std::cos(t) - s.y() * std::sin(t),
@@ -29,12 +29,37 @@ std::optional<ClosedFormError> circleError(const mysim::Scene& scene, const mysi
   return ClosedFormError{"circle position", worst, s.norm()};
 }
 
-std::optional<ClosedFormError> chainSagError(const mysim::Scene& scene,
+// A uniform chain read back from its model: what the closed forms need.
+struct UniformChain {
+  int particles;
+  double rest_length, particle_mass, stiffness, damping;
+  mysim::Vec3 origin, direction;
+};
+
+// The chain's parameters, if the model is a chain of equal springs and equal free masses.
+std::optional<UniformChain> uniformChain(const mysim::Model& model) {
+  if (model.kind != mysim::SystemKind::Chain || model.springs.empty()) return std::nullopt;
+  const mysim::Spring& s0 = model.springs.front();
+  for (const mysim::Spring& s : model.springs) {
+    if (s.rest_length != s0.rest_length || s.stiffness != s0.stiffness ||
+        s.damping != s0.damping) {
+      return std::nullopt;
+    }
+  }
+  for (int p = 1; p < model.particleCount(); ++p) {
+    if (model.mass[p] != model.mass[1]) return std::nullopt;
+  }
+  const mysim::Vec3 origin = mysim::at3(model.start_position, 0);
+  const mysim::Vec3 next = mysim::at3(model.start_position, 1);
+  return UniformChain{model.particleCount(), s0.rest_length, model.mass[1], s0.stiffness,
+                      s0.damping,           origin,          (next - origin).normalized()};
+}
+
+std::optional<ClosedFormError> chainSagError(const mysim::Model& model, const UniformChain& c,
                                              const mysim::RunRecord& run) {
-  const mysim::ChainShape& c = scene.chain;
   const int n = c.particles - 1;
-  const double g = scene.gravity.norm();
-  const mysim::Vec3 down = scene.gravity / g;
+  const double g = model.gravity.norm();
+  const mysim::Vec3 down = model.gravity / g;
   double worst = 0.0, end = 0.0;
   for (int j = 1; j <= n; ++j) {
     const double drop =
@@ -46,13 +71,12 @@ std::optional<ClosedFormError> chainSagError(const mysim::Scene& scene,
   return ClosedFormError{"hanging chain at rest", worst, end};
 }
 
-std::optional<ClosedFormError> pendulumPeriodError(const mysim::Scene& scene,
+std::optional<ClosedFormError> pendulumPeriodError(const mysim::Model& model, const UniformChain& c,
                                                    const mysim::RunRecord& run) {
-  const mysim::ChainShape& c = scene.chain;
-  const double g = scene.gravity.norm();
-  const mysim::Vec3 down = scene.gravity / g;
+  const double g = model.gravity.norm();
+  const mysim::Vec3 down = model.gravity / g;
   // Released at rest at angle theta0 from the downward vertical.
-  const double theta0 = std::acos(std::clamp(c.direction.normalized().dot(down), -1.0, 1.0));
+  const double theta0 = std::acos(std::clamp(c.direction.dot(down), -1.0, 1.0));
   const double period = 4.0 * std::sqrt(c.rest_length / g) * ellipticK(std::sin(theta0 / 2));
   // Horizontal offset of the bob from the pin, along the start direction's horizontal part.
   const mysim::Vec3 across = (c.direction - c.direction.dot(down) * down).normalized();
@@ -73,18 +97,21 @@ std::optional<ClosedFormError> pendulumPeriodError(const mysim::Scene& scene,
 
 }  // namespace
 
-std::optional<ClosedFormError> closedFormError(const mysim::Scene& scene,
+std::optional<ClosedFormError> closedFormError(const mysim::Model& model,
                                                const mysim::RunRecord& run) {
   if (run.frames.empty()) return std::nullopt;
-  if (scene.kind == mysim::SystemKind::Circle) return circleError(scene, run);
-  if (scene.kind != mysim::SystemKind::Chain || scene.pins != std::vector<int>{0} ||
-      scene.gravity.norm() == 0.0 || scene.wind || scene.pin_motion || scene.sphere) {
+  if (model.isCircle()) return circleError(model, run);
+  const std::optional<UniformChain> chain = uniformChain(model);
+  std::vector<char> only_first_pinned(model.particleCount(), 0);
+  if (!only_first_pinned.empty()) only_first_pinned[0] = 1;
+  if (!chain || model.pinned != only_first_pinned || model.gravity.norm() == 0.0 || model.wind ||
+      model.pin_motion || model.sphere) {
     return std::nullopt;
   }
-  const double alignment = scene.chain.direction.normalized().dot(scene.gravity.normalized());
-  if (alignment > 1.0 - 1e-12) return chainSagError(scene, run);
-  if (scene.chain.particles == 2 && scene.drag == 0.0 && scene.chain.damping == 0.0) {
-    return pendulumPeriodError(scene, run);
+  const double alignment = chain->direction.dot(model.gravity.normalized());
+  if (alignment > 1.0 - 1e-12) return chainSagError(model, *chain, run);
+  if (chain->particles == 2 && model.drag == 0.0 && chain->damping == 0.0) {
+    return pendulumPeriodError(model, *chain, run);
   }
   return std::nullopt;
 }

@@ -1,12 +1,25 @@
 #pragma once
 #include <CLI/CLI.hpp>
 #include <cstdlib>
+#include <optional>
 #include <string>
+#include <vector>
+
+#include "compare/engine_registry.h"
 
 namespace springcheck {
 
-// Exit codes of the springcheck executable.
-enum ExitCode : int { kOk = 0, kFailure = 1, kBadInput = 2, kBlowUp = 3 };
+// Exit codes of the springcheck executable (README). kEngineFailed: an external engine crashed,
+// timed out or returned a result that failed its checks.
+enum ExitCode : int { kOk = 0, kFailure = 1, kBadInput = 2, kBlowUp = 3, kEngineFailed = 4 };
+
+// --engines-file FILE (repeatable): the user's own engines, for every command that takes
+// engines. The option's help lists the built-in engines.
+void addEnginesFileOption(CLI::App* command, std::vector<std::string>& files);
+// The built-in registry plus those files; on a bad file prints the error and returns nothing.
+std::optional<EngineRegistry> makeRegistry(const std::vector<std::string>& files);
+// The exit code for an engine that did not run.
+int exitCodeFor(const EngineError& error);
 
 // A flag value that must be a number > 0 (CLI11's PositiveNumber prints its whole double range).
 inline const CLI::Validator kPositive(

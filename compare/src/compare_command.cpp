@@ -4,16 +4,15 @@
 
 #include "commands.h"
 #include "compare/comparison.h"
-#include "compare/engines.h"
-#include "mysim/scene_file.h"
 
 namespace springcheck {
 namespace {
 
 struct CompareOptions {
   std::string scene_path;
-  std::string engines = "mysim,bullet-deformable,bullet-implicit,bullet-classic";
+  std::string engines;  // empty: every engine of the registry
   std::string out;
+  std::vector<std::string> engines_files;
 };
 
 std::vector<std::string> splitList(const std::string& text) {
@@ -26,12 +25,16 @@ std::vector<std::string> splitList(const std::string& text) {
 }
 
 int compare(const CompareOptions& o) {
-  auto scene = mysim::loadScene(o.scene_path);
+  const std::optional<EngineRegistry> registry = makeRegistry(o.engines_files);
+  if (!registry) return kBadInput;
+  auto scene = registry->loadScene(o.scene_path);
   if (!scene) {
     std::cerr << "error: " << scene.error() << '\n';
     return kBadInput;
   }
-  auto comparison = compareScene(*scene, splitList(o.engines));
+  const std::vector<std::string> engines =
+      o.engines.empty() ? registry->names() : splitList(o.engines);
+  auto comparison = compareScene(*registry, *scene, engines);
   if (!comparison) {
     std::cerr << "error: --engines: " << comparison.error() << '\n';
     return kBadInput;
@@ -43,6 +46,7 @@ int compare(const CompareOptions& o) {
     return kFailure;
   }
   std::cout << "results in " << dir << '\n';
+  if (!comparison->failed.empty()) return kEngineFailed;
   for (const EngineMetrics& m : comparison->engines) {
     if (m.blew_up) return kBlowUp;
   }
@@ -56,8 +60,8 @@ void addCompareCommand(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand("compare", "Run a scene in several engines and compare");
   cmd->add_option("scene", o->scene_path, "Scene file (JSON)")->required();
   cmd->add_option("--engines", o->engines,
-                  "Comma-separated engines (mysim, mysim:INTEGRATOR, bullet-...)")
-      ->capture_default_str();
+                  "Comma-separated engines (default: every engine, your own included)");
+  addEnginesFileOption(cmd, o->engines_files);
   cmd->add_option("--out", o->out, "Output directory (default out/compare/SCENE)");
   cmd->callback([o, &exit_code] { exit_code = compare(*o); });
 }

@@ -5,29 +5,29 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "compare/engines.h"
 #include "compare/penetration_metric.h"
 #include "compare/run_output.h"
 #include "compare/sag_metric.h"
 
 namespace springcheck {
 
-std::expected<Comparison, std::string> compareScene(const mysim::Scene& scene,
+std::expected<Comparison, std::string> compareScene(const EngineRegistry& registry,
+                                                    const mysim::Scene& scene,
                                                     const std::vector<std::string>& engines) {
-  Comparison c{
-      scene, scene.kind == mysim::SystemKind::Circle ? mysim::Model{} : mysim::buildModel(scene),
-      {},    {},
-      {},    {}};
+  Comparison c;
+  c.scene = scene;
+  c.model = mysim::buildModel(scene);
   for (const std::string& engine : engines) {
-    if (auto known = checkEngineName(engine); !known) return std::unexpected(known.error());
+    if (auto known = registry.check(engine); !known) return std::unexpected(known.error());
   }
+  const RunConfig config = runConfig(scene);
   for (const std::string& engine : engines) {
-    auto record = runEngine(scene, engine);
+    auto record = registry.run(engine, c.model, config);
     if (!record) {
-      c.refused.push_back({engine, record.error()});
+      (record.error().kind == EngineError::Kind::Failed ? c.failed : c.refused)
+          .push_back({engine, record.error().message});
       continue;
     }
-    record->engine = engine;
     c.runs.push_back({engine, std::move(*record)});
   }
   for (const EngineRun& run : c.runs) c.engines.push_back(engineMetrics(scene, c.model, run));
@@ -55,6 +55,7 @@ void printComparison(std::ostream& out, const Comparison& c) {
   out << "scene " << c.scene.name << " (" << c.scene.source << "), dt " << c.scene.dt << " s, "
       << c.scene.duration << " s\n";
   for (const Comparison::Refusal& r : c.refused) out << "  refused: " << r.reason << '\n';
+  for (const Comparison::Refusal& r : c.failed) out << "  FAILED: " << r.reason << '\n';
   char line[512];
   std::snprintf(line, sizeof line, "  %-30s", "per engine");
   out << line;
@@ -152,6 +153,10 @@ std::expected<void, std::string> writeComparison(const std::string& dir, const C
             {"dt", c.scene.dt},
             {"duration", c.scene.duration},
             {"refused", json::array()}};
+  j["failed"] = json::array();
+  for (const Comparison::Refusal& r : c.failed) {
+    j["failed"].push_back({{"engine", r.engine}, {"reason", r.reason}});
+  }
   for (const Comparison::Refusal& r : c.refused) {
     j["refused"].push_back({{"engine", r.engine}, {"reason", r.reason}});
   }

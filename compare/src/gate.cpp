@@ -25,6 +25,13 @@ CheckResult evaluate(const ToleranceCheck& check, const Comparison& c) {
       return r;
     }
   }
+  for (const Comparison::Refusal& failure : c.failed) {
+    if (std::find(check.engines.begin(), check.engines.end(), failure.engine) !=
+        check.engines.end()) {
+      r.problem = "failed: " + failure.reason;
+      return r;
+    }
+  }
   auto metrics_of = [&](const std::string& engine) -> const EngineMetrics* {
     for (const EngineMetrics& m : c.engines) {
       if (m.engine == engine) return &m;
@@ -63,7 +70,7 @@ CheckResult evaluate(const ToleranceCheck& check, const Comparison& c) {
 
 }  // namespace
 
-GateReport runGate(const Tolerances& tolerances) {
+GateReport runGate(const EngineRegistry& registry, const Tolerances& tolerances) {
   // Engines per scene, in order of first mention, so every run happens once.
   std::map<std::string, std::vector<std::string>> engines;
   std::vector<std::string> scenes;
@@ -77,8 +84,8 @@ GateReport runGate(const Tolerances& tolerances) {
   GateReport report;
   std::map<std::string, Comparison> comparisons;
   for (const std::string& path : scenes) {
-    auto scene = mysim::loadScene(path);  // validated when the tolerances were read
-    auto comparison = compareScene(*scene, engines[path]);
+    auto scene = registry.loadScene(path);  // validated when the tolerances were read
+    auto comparison = compareScene(registry, *scene, engines[path]);
     comparisons.emplace(path, std::move(*comparison));
   }
   for (const ToleranceCheck& check : tolerances.checks) {

@@ -2,21 +2,30 @@
 #include <memory>
 
 #include "commands.h"
-#include "compare/engines.h"
 #include "compare/scene_files.h"
-#include "mysim/scene_file.h"
 
 namespace springcheck {
 namespace {
 
-int listAll(const std::string& dir) {
+struct ListOptions {
+  std::string dir = "scenes";
+  std::vector<std::string> engines_files;
+};
+
+int listAll(const ListOptions& o) {
+  const std::optional<EngineRegistry> registry = makeRegistry(o.engines_files);
+  if (!registry) return kBadInput;
+  const std::string& dir = o.dir;
   std::cout << "Integrators:\n";
   for (const mysim::IntegratorInfo& info : mysim::integratorCatalog()) {
     std::cout << "  " << info.name << (info.alias.empty() ? "" : " (" + info.alias + ")") << "  "
               << info.description << '\n';
   }
   std::cout << "Engines:\n";
-  for (const std::string& name : engineNames()) std::cout << "  " << name << '\n';
+  for (const Engine& e : registry->engines()) {
+    std::cout << "  " << e.name << (e.takes_integrator ? "[:INTEGRATOR]" : "") << "  (" << e.kind
+              << ") " << e.description << '\n';
+  }
   std::cout << "Scenes in " << dir << ":\n";
   auto files = sceneFiles(dir);
   if (!files) {
@@ -25,7 +34,7 @@ int listAll(const std::string& dir) {
   }
   int code = kOk;
   for (const std::string& file : *files) {
-    auto scene = mysim::loadScene(file);
+    auto scene = registry->loadScene(file);
     if (!scene) {
       std::cerr << "error: " << scene.error() << '\n';
       code = kBadInput;
@@ -41,10 +50,11 @@ int listAll(const std::string& dir) {
 }  // namespace
 
 void addListCommand(CLI::App& app, int& exit_code) {
-  auto dir = std::make_shared<std::string>("scenes");
+  auto o = std::make_shared<ListOptions>();
   CLI::App* list = app.add_subcommand("list", "List integrators, engines and scenes");
-  list->add_option("dir", *dir, "Scene directory")->capture_default_str();
-  list->callback([dir, &exit_code] { exit_code = listAll(*dir); });
+  list->add_option("dir", o->dir, "Scene directory")->capture_default_str();
+  addEnginesFileOption(list, o->engines_files);
+  list->callback([o, &exit_code] { exit_code = listAll(*o); });
 }
 
 }  // namespace springcheck

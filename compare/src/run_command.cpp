@@ -2,9 +2,7 @@
 #include <memory>
 
 #include "commands.h"
-#include "compare/engines.h"
 #include "compare/run_output.h"
-#include "mysim/scene_file.h"
 
 namespace springcheck {
 namespace {
@@ -17,10 +15,13 @@ struct RunOptions {
   double duration = 0.0;
   int classic_iterations = 0;
   std::string out;
+  std::vector<std::string> engines_files;
 };
 
 int runScene(const RunOptions& o) {
-  auto scene = mysim::loadScene(o.scene_path);
+  const std::optional<EngineRegistry> registry = makeRegistry(o.engines_files);
+  if (!registry) return kBadInput;
+  auto scene = registry->loadScene(o.scene_path);
   if (!scene) {
     std::cerr << "error: " << scene.error() << '\n';
     return kBadInput;
@@ -36,16 +37,18 @@ int runScene(const RunOptions& o) {
   }
   if (o.dt > 0.0) scene->dt = o.dt;
   if (o.duration > 0.0) scene->duration = o.duration;
-  if (o.classic_iterations > 0) scene->classic.iterations = o.classic_iterations;
+  if (o.classic_iterations > 0) {
+    scene->engine_settings["bullet"]["classic_iterations"] = o.classic_iterations;
+  }
   if (scene->dt > scene->duration) {
     std::cerr << "error: --dt " << scene->dt << " is longer than the duration " << scene->duration
               << '\n';
     return kBadInput;
   }
-  auto record = runEngine(*scene, o.engine);
+  auto record = registry->run(o.engine, *scene);
   if (!record) {
-    std::cerr << "error: " << record.error() << '\n';
-    return kBadInput;
+    std::cerr << "error: " << record.error().message << '\n';
+    return exitCodeFor(record.error());
   }
   const std::string dir = o.out.empty() ? "out/" + scene->name + "/" + o.engine : o.out;
   if (auto written = writeRunOutputs(dir, *scene, *record); !written) {
@@ -70,6 +73,7 @@ void addRunCommand(CLI::App& app, int& exit_code) {
   CLI::App* run = app.add_subcommand("run", "Run one scene and write its results");
   run->add_option("scene", options->scene_path, "Scene file (JSON)")->required();
   run->add_option("--engine", options->engine, "Engine to run the scene in")->capture_default_str();
+  addEnginesFileOption(run, options->engines_files);
   run->add_option("--integrator", options->integrator, "Integrator (overrides the scene)");
   run->add_option("--dt", options->dt, "Step in s (overrides the scene)")
       ->check(kPositive);

@@ -19,7 +19,7 @@ EngineMetrics engineMetrics(const mysim::Scene& scene, const mysim::Model& model
   m.blowup_time = r.blowup ? r.blowup->time : 0.0;
   m.wall_seconds = r.wall_seconds;
   m.steps = r.steps;
-  m.closed_form = closedFormError(scene, r);
+  m.closed_form = closedFormError(model, r);
   m.drift = energyDrift(r.energies);
   m.external_work = model.wind.has_value() || model.pin_motion.has_value();
   if (scene.kind == mysim::SystemKind::Circle) return m;

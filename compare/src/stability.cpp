@@ -5,7 +5,6 @@
 #include <functional>
 #include <limits>
 
-#include "compare/engines.h"
 
 namespace springcheck {
 
@@ -64,17 +63,20 @@ StabilityLimit bisect(const std::function<bool(double)>& stable, double h_min, d
 
 }  // namespace
 
-StabilityLimit oscillatorStability(const std::string& integrator, double stiffness, double mass,
-                                   double damping_ratio, const StabilitySettings& settings) {
+StabilityLimit oscillatorStability(const EngineRegistry& registry, const std::string& integrator,
+                                   double stiffness, double mass, double damping_ratio,
+                                   const StabilitySettings& settings) {
   const double w = std::sqrt(stiffness / mass);
-  mysim::Scene scene = oscillatorScene(stiffness, mass, damping_ratio);
-  scene.integrator.name = integrator;
-  scene.integrator.cg_tolerance = 1e-12;
+  const mysim::Scene scene = oscillatorScene(stiffness, mass, damping_ratio);
+  const mysim::Model model = mysim::buildModel(scene);
+  RunConfig config = runConfig(scene);
+  config.integrator.name = integrator;
+  config.integrator.cg_tolerance = 1e-12;
   auto stable = [&](double h) {
-    mysim::Scene run = scene;
-    run.dt = h;
-    run.duration = h * std::max(200.0, std::ceil(settings.periods * 2 * M_PI / (w * h)));
-    auto record = runEngine(run, "mysim");
+    RunConfig run = config;
+    run.run.dt = h;
+    run.run.duration = h * std::max(200.0, std::ceil(settings.periods * 2 * M_PI / (w * h)));
+    auto record = registry.run("mysim", model, run);
     if (!record || record->blowup) return false;
     const double e0 = record->energies.front().total();
     for (const mysim::EnergyTerms& e : record->energies) {
@@ -92,31 +94,25 @@ StabilityLimit oscillatorStability(const std::string& integrator, double stiffne
   return limit;
 }
 
-StabilityLimit sceneStability(const mysim::Scene& scene, const std::string& integrator,
+StabilityLimit sceneStability(const EngineRegistry& registry, const mysim::Model& model,
+                              const RunConfig& config, const std::string& integrator,
                               double stiffness, double mass, double h_min, double h_max,
                               double precision) {
-  mysim::Scene base = scene;
-  base.integrator.name = integrator;
-  base.chain.stiffness = stiffness;
-  for (auto* family : {&base.cloth.structural, &base.cloth.shear, &base.cloth.flex}) {
-    if (*family) (*family)->stiffness = stiffness;
-  }
+  mysim::Model base = model;
   for (mysim::Spring& s : base.springs) s.stiffness = stiffness;
-  if (mass > 0) {
-    base.chain.particle_mass = base.cloth.particle_mass = mass;
-    for (mysim::ExplicitParticle& p : base.particles) p.mass = mass;
-  }
+  if (mass > 0) base.mass.setConstant(mass);
+  RunConfig run = config;
+  run.integrator.name = integrator;
   auto stable = [&](double h) {
-    mysim::Scene run = base;
-    run.dt = h;
-    auto record = runEngine(run, "mysim");
+    run.run.dt = h;
+    auto record = registry.run("mysim", base, run);
     return record && !record->blowup;
   };
   StabilityLimit limit = bisect(stable, h_min, h_max, precision);
-  limit.system = scene.name;
+  limit.system = config.scene_name;
   limit.integrator = integrator;
   limit.stiffness = stiffness;
-  limit.mass = mass > 0 ? mass : scene.cloth.particle_mass;
+  limit.mass = base.mass.size() > 0 ? base.mass.maxCoeff() : 0.0;
   return limit;
 }
 

@@ -11,9 +11,7 @@
 
 #include "commands.h"
 #include "compare/energy_metric.h"
-#include "compare/engines.h"
 #include "compare/stability.h"
-#include "mysim/scene_file.h"
 
 namespace springcheck {
 namespace {
@@ -66,7 +64,7 @@ void writeExtremes(const std::string& path, int jobs) {
     s.dt = 0.01;
     s.duration = 1e6 * s.dt;
     s.sample_interval = s.duration / 1000;
-    auto r = runEngine(s, "mysim");
+    auto r = EngineRegistry().run("mysim", s);
     const EnergyDrift d = energyDrift(r->energies);
     std::ostringstream row;
     row.precision(8);
@@ -97,7 +95,7 @@ void writeExtremes(const std::string& path, int jobs) {
     s.dt = dt;
     s.duration = steps * dt;
     s.sample_interval = s.duration;
-    auto r = runEngine(s, "mysim");
+    auto r = EngineRegistry().run("mysim", s);
     out << "cloth 256 x 256," << integrator << ",time per step," << r->wall_seconds / r->steps
         << ",s\n"
         << "cloth 256 x 256," << integrator << ",stable," << (r->blowup ? 0 : 1) << ",1/0\n";
@@ -120,9 +118,10 @@ int stability(const StabilityOptions& o) {
       return kBadInput;
     }
   }
+  const EngineRegistry registry;
   std::optional<mysim::Scene> scene;
   if (!o.scene.empty()) {
-    auto loaded = mysim::loadScene(o.scene);
+    auto loaded = registry.loadScene(o.scene);
     if (!loaded) {
       std::cerr << "error: " << loaded.error() << '\n';
       return kBadInput;
@@ -144,9 +143,10 @@ int stability(const StabilityOptions& o) {
   int done = 0;
   parallelFor(static_cast<int>(combos.size()), jobs, [&](int k) {
     const Combo& c = combos[k];
-    limits[k] = scene ? sceneStability(*scene, c.integrator, c.k, c.m, scene->duration / 1e5,
+    limits[k] = scene ? sceneStability(registry, mysim::buildModel(*scene), runConfig(*scene),
+                                       c.integrator, c.k, c.m, scene->duration / 1e5,
                                        scene->duration / 10, 0.02)
-                      : oscillatorStability(c.integrator, c.k, c.m, o.damping_ratio, {});
+                      : oscillatorStability(registry, c.integrator, c.k, c.m, o.damping_ratio, {});
     std::lock_guard<std::mutex> lock(mutex);
     ++done;
     if (done % std::max<int>(1, combos.size() / 10) == 0 ||

@@ -3,9 +3,7 @@
 
 #include "commands.h"
 #include "compare/comparison.h"
-#include "compare/engines.h"
 #include "compare/scene_files.h"
-#include "mysim/scene_file.h"
 
 namespace springcheck {
 namespace {
@@ -13,13 +11,16 @@ namespace {
 struct SuiteOptions {
   std::string dir = "scenes";
   std::string out = "out/suite";
+  std::vector<std::string> engines_files;
 };
 
-// Every scene under a directory in every engine that takes it (mysim always; the Bullet engines
-// refuse what they cannot represent, and that is listed), with the comparison table of each.
-// A scene file that does not load, or a run that blows up, makes the suite fail; the other
-// scenes still run.
+// Every scene under a directory in every engine that takes it (every engine of the registry,
+// the user's own included; an engine that refuses a scene says why, and that is listed), with
+// the comparison table of each. A scene file that does not load, a run that blows up or an
+// external engine that fails makes the suite fail; the other scenes still run.
 int runSuite(const SuiteOptions& o) {
+  const std::optional<EngineRegistry> registry = makeRegistry(o.engines_files);
+  if (!registry) return kBadInput;
   auto files = sceneFiles(o.dir);
   if (!files) {
     std::cerr << "error: " << files.error() << '\n';
@@ -27,14 +28,15 @@ int runSuite(const SuiteOptions& o) {
   }
   int code = kOk;
   for (const std::string& file : *files) {
-    auto scene = mysim::loadScene(file);
+    auto scene = registry->loadScene(file);
     if (!scene) {
       std::cerr << "error: " << scene.error() << '\n';
       code = kBadInput;
       continue;
     }
-    auto comparison = compareScene(*scene, engineNames());
+    auto comparison = compareScene(*registry, *scene, registry->names());
     printComparison(std::cout, *comparison);
+    if (!comparison->failed.empty() && code == kOk) code = kEngineFailed;
     if (auto written = writeComparison(o.out + "/" + scene->name, *comparison); !written) {
       std::cerr << "error: " << written.error() << '\n';
       code = kFailure;
@@ -57,6 +59,7 @@ void addSuiteCommand(CLI::App& app, int& exit_code) {
       "suite", "Run every scene under a directory in every engine that takes it, and compare");
   suite->add_option("dir", options->dir, "Scene directory")->capture_default_str();
   suite->add_option("--out", options->out, "Output root")->capture_default_str();
+  addEnginesFileOption(suite, options->engines_files);
   suite->callback([options, &exit_code] { exit_code = runSuite(*options); });
 }
 

@@ -15,9 +15,7 @@
 #include "compare/closed_form.h"
 #include "compare/drape_metric.h"
 #include "compare/energy_metric.h"
-#include "compare/engines.h"
 #include "compare/settling_metric.h"
-#include "mysim/scene_file.h"
 
 namespace springcheck {
 namespace {
@@ -64,12 +62,13 @@ bool multipleOf(double interval, double dt) {
   return std::abs(ratio - std::round(ratio)) < 1e-9 * ratio;
 }
 
-std::expected<SweepSpec, std::string> parseSpec(const json& j, const std::string& source) {
+std::expected<SweepSpec, std::string> parseSpec(const json& j, const std::string& source,
+                                                EngineRegistry& registry) {
   auto bad = [&](const std::string& message) { return std::unexpected(source + ": " + message); };
   if (!j.is_object()) return bad("expected an object");
   static const std::set<std::string> known = {
       "$comment",        "name",     "scenes",          "engines",  "integrators", "dt",
-      "stiffness_scale", "duration", "sample_interval", "reference"};
+      "stiffness_scale", "duration", "sample_interval", "reference", "engines_file"};
   for (auto it = j.begin(); it != j.end(); ++it) {
     if (!known.count(it.key())) return bad(it.key() + ": unknown field (see docs/sweeps.md)");
   }
@@ -77,12 +76,22 @@ std::expected<SweepSpec, std::string> parseSpec(const json& j, const std::string
   s.source = source;
   s.name = j.value("name", fs::path(source).stem().string());
   const fs::path base = fs::path(source).parent_path();
+  if (j.contains("engines_file")) {
+    if (!j["engines_file"].is_string()) return bad("engines_file: expected a path");
+    s.engines_file = (base / j["engines_file"].get<std::string>()).lexically_normal().string();
+    const auto& read = registry.enginesFiles();
+    if (std::find(read.begin(), read.end(), s.engines_file) == read.end()) {
+      if (auto added = registry.addEnginesFile(s.engines_file); !added) {
+        return bad("engines_file: " + added.error());
+      }
+    }
+  }
   if (!j.contains("scenes")) return bad("scenes: missing (required)");
   auto scenes = stringList(j["scenes"], "scenes");
   if (!scenes) return bad(scenes.error());
   for (std::size_t k = 0; k < scenes->size(); ++k) {
     const std::string path = (base / (*scenes)[k]).lexically_normal().string();
-    auto scene = mysim::loadScene(path);
+    auto scene = registry.loadScene(path);
     if (!scene) return bad("scenes[" + std::to_string(k) + "]: " + scene.error());
     s.scenes.push_back(path);
     s.loaded.emplace(path, std::move(*scene));
@@ -93,11 +102,14 @@ std::expected<SweepSpec, std::string> parseSpec(const json& j, const std::string
     for (const std::string& e : *engines) {
       if (e.find(':') != std::string::npos)
         return bad("engines: list integrators under \"integrators\", not as " + e);
-      if (auto ok = checkEngineName(e); !ok) return bad("engines: " + ok.error());
+      if (auto ok = registry.check(e); !ok) return bad("engines: " + ok.error());
     }
     s.engines = *engines;
   } else {
     s.engines = {"mysim"};
+  }
+  for (const std::string& e : s.engines) {
+    if (registry.find(e)->takes_integrator) s.integrator_engines.push_back(e);
   }
   if (j.contains("integrators")) {
     auto integrators = stringList(j["integrators"], "integrators");
@@ -157,17 +169,10 @@ std::expected<SweepSpec, std::string> parseSpec(const json& j, const std::string
   return s;
 }
 
-void scaleStiffness(mysim::Scene& scene, double scale) {
-  scene.chain.stiffness *= scale;
-  for (auto* family : {&scene.cloth.structural, &scene.cloth.shear, &scene.cloth.flex}) {
-    if (*family) (*family)->stiffness *= scale;
-  }
-  for (mysim::Spring& s : scene.springs) s.stiffness *= scale;
-}
-
 }  // namespace
 
-std::expected<SweepSpec, std::string> loadSweepSpec(const std::string& path) {
+std::expected<SweepSpec, std::string> loadSweepSpec(const std::string& path,
+                                                    EngineRegistry& registry) {
   std::ifstream in(path);
   if (!in) return std::unexpected(path + ": cannot open the sweep spec");
   json j;
@@ -176,7 +181,7 @@ std::expected<SweepSpec, std::string> loadSweepSpec(const std::string& path) {
   } catch (const json::parse_error& e) {
     return std::unexpected(path + ": not valid JSON: " + e.what());
   }
-  return parseSpec(j, path);
+  return parseSpec(j, path, registry);
 }
 
 std::vector<SweepCase> expandSweep(const SweepSpec& spec) {
@@ -184,8 +189,11 @@ std::vector<SweepCase> expandSweep(const SweepSpec& spec) {
   for (const std::string& scene : spec.scenes) {
     for (double scale : spec.stiffness_scales) {
       for (const std::string& engine : spec.engines) {
+        const bool takes_integrator =
+            std::find(spec.integrator_engines.begin(), spec.integrator_engines.end(), engine) !=
+            spec.integrator_engines.end();
         const std::vector<std::string> integrators =
-            engine == "mysim" ? spec.integrators : std::vector<std::string>{"-"};
+            takes_integrator ? spec.integrators : std::vector<std::string>{"-"};
         for (const std::string& integrator : integrators) {
           for (double dt : spec.dts) {
             cases.push_back({static_cast<int>(cases.size()), scene, engine, integrator, dt, scale});
@@ -197,18 +205,18 @@ std::vector<SweepCase> expandSweep(const SweepSpec& spec) {
   return cases;
 }
 
-std::expected<mysim::Scene, std::string> caseScene(const SweepSpec& spec, const SweepCase& c) {
+std::expected<CaseRun, std::string> caseRun(const SweepSpec& spec, const SweepCase& c) {
   const auto cached = spec.loaded.find(c.scene);
-  auto scene = cached != spec.loaded.end()
-                   ? std::expected<mysim::Scene, std::string>(cached->second)
-                   : mysim::loadScene(c.scene);
-  if (!scene) return scene;
-  if (c.integrator != "-") scene->integrator.name = c.integrator;
-  scene->dt = c.dt;
-  if (spec.duration) scene->duration = *spec.duration;
-  scene->sample_interval = spec.sample_interval;
-  scaleStiffness(*scene, c.stiffness_scale);
-  return scene;
+  if (cached == spec.loaded.end()) {
+    return std::unexpected(spec.source + ": scene " + c.scene + " is not one of the spec's");
+  }
+  CaseRun run{cached->second, mysim::buildModel(cached->second), runConfig(cached->second)};
+  if (c.integrator != "-") run.config.integrator.name = c.integrator;
+  run.config.run.dt = c.dt;
+  if (spec.duration) run.config.run.duration = *spec.duration;
+  run.config.run.sample_interval = spec.sample_interval;
+  mysim::scaleStiffness(run.model, c.stiffness_scale);
+  return run;
 }
 
 const std::vector<std::string>& sweepColumns() {
@@ -261,7 +269,7 @@ std::string sanitize(std::string text) {
   return text;
 }
 
-SweepRow runCase(const SweepSpec& spec, const SweepCase& c,
+SweepRow runCase(const EngineRegistry& registry, const SweepSpec& spec, const SweepCase& c,
                  const std::map<ReferenceKey, mysim::RunRecord>& references) {
   SweepRow row = {std::to_string(c.id), c.scene,      c.engine,
                   c.integrator,         number(c.dt), number(c.stiffness_scale)};
@@ -270,11 +278,16 @@ SweepRow runCase(const SweepSpec& spec, const SweepCase& c,
     const auto& cols = sweepColumns();
     row[std::find(cols.begin(), cols.end(), column) - cols.begin()] = value;
   };
-  auto scene = caseScene(spec, c);
-  auto record = scene ? runEngine(*scene, c.engine) : std::unexpected(scene.error());
-  if (!record) {
+  auto run = caseRun(spec, c);
+  if (!run) {
     set("status", "refused");
-    set("note", sanitize(record.error()));
+    set("note", sanitize(run.error()));
+    return row;
+  }
+  auto record = registry.run(c.engine, run->model, run->config);
+  if (!record) {
+    set("status", record.error().kind == EngineError::Kind::Failed ? "failed" : "refused");
+    set("note", sanitize(record.error().message));
     return row;
   }
   const mysim::RunRecord& r = *record;
@@ -294,9 +307,7 @@ SweepRow runCase(const SweepSpec& spec, const SweepCase& c,
     set("energy_drift_max", number(drift.max_abs_total));
     set("energy_rise", number(drift.max_rise));
   }
-  if (scene->kind != mysim::SystemKind::Circle) {
-    set("max_strain", number(maxStrainOverRun(mysim::buildModel(*scene), r)));
-  }
+  if (!run->model.isCircle()) set("max_strain", number(maxStrainOverRun(run->model, r)));
   set("note", sanitize([&] {
         std::string notes;
         for (const std::string& n : r.notes) notes += (notes.empty() ? "" : "; ") + n;
@@ -304,7 +315,7 @@ SweepRow runCase(const SweepSpec& spec, const SweepCase& c,
       }()));
   if (r.blowup) return row;  // errors of a blown-up run mean nothing
   if (spec.reference_closed_form) {
-    if (auto cf = closedFormError(*scene, r)) {
+    if (auto cf = closedFormError(run->model, r)) {
       set("reference", "closed_form: " + cf->quantity);
       set("error", number(cf->error));
       set("final_error", number(cf->error));
@@ -377,7 +388,8 @@ std::expected<std::vector<SweepRow>, std::string> readSweepTable(const std::stri
   return rows;
 }
 
-std::expected<int, std::string> runSweep(const SweepSpec& spec, const std::string& out_csv,
+std::expected<int, std::string> runSweep(const EngineRegistry& registry, const SweepSpec& spec,
+                                         const std::string& out_csv,
                                          const SweepOptions& options) {
   std::vector<SweepRow> kept;
   std::set<int> done;
@@ -412,8 +424,14 @@ std::expected<int, std::string> runSweep(const SweepSpec& spec, const std::strin
                     spec.reference_integrator,
                     finest / spec.reference_refine,
                     list[k].second};
-        auto scene = caseScene(spec, c);
-        results[k] = scene ? runEngine(*scene, "mysim") : std::unexpected(scene.error());
+        auto run = caseRun(spec, c);
+        if (!run) {
+          results[k] = std::unexpected(run.error());
+          continue;
+        }
+        auto record = registry.run("mysim", run->model, run->config);
+        results[k] = record ? std::expected<mysim::RunRecord, std::string>(std::move(*record))
+                            : std::unexpected(record.error().message);
       }
     };
     std::vector<std::thread> threads;
@@ -434,7 +452,7 @@ std::expected<int, std::string> runSweep(const SweepSpec& spec, const std::strin
   int finished = 0;
   auto work = [&] {
     for (std::size_t k; (k = next++) < todo.size();) {
-      SweepRow row = runCase(spec, todo[k], references);
+      SweepRow row = runCase(registry, spec, todo[k], references);
       std::lock_guard<std::mutex> lock(mutex);
       out << joinRow(row) << '\n' << std::flush;
       kept.push_back(std::move(row));

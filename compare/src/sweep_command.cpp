@@ -19,10 +19,13 @@ struct SweepCommandOptions {
   int jobs = 0;
   std::string shard = "0/1";
   bool fresh = false;
+  std::vector<std::string> engines_files;
 };
 
 int sweep(const SweepCommandOptions& o) {
-  auto spec = loadSweepSpec(o.spec);
+  std::optional<EngineRegistry> registry = makeRegistry(o.engines_files);
+  if (!registry) return kBadInput;
+  auto spec = loadSweepSpec(o.spec, *registry);
   if (!spec) {
     std::cerr << "error: " << spec.error() << '\n';
     return kBadInput;
@@ -43,7 +46,7 @@ int sweep(const SweepCommandOptions& o) {
   std::error_code ec;
   std::filesystem::create_directories(std::filesystem::path(out).parent_path(), ec);
   const auto total = expandSweep(*spec).size();
-  auto ran = runSweep(*spec, out, options);
+  auto ran = runSweep(*registry, *spec, out, options);
   if (!ran) {
     std::cerr << "error: " << ran.error() << '\n';
     return kFailure;
@@ -64,6 +67,7 @@ void addSweepCommands(CLI::App& app, int& exit_code) {
   cmd->add_option("--shard", o->shard, "Run only cases with id % n == i, as i/n")
       ->capture_default_str();
   cmd->add_flag("--fresh", o->fresh, "Start over instead of resuming an existing table");
+  addEnginesFileOption(cmd, o->engines_files);
   cmd->callback([o, &exit_code] { exit_code = sweep(*o); });
 
   auto inputs = std::make_shared<std::vector<std::string>>();

@@ -7,7 +7,7 @@
 #include <set>
 #include <sstream>
 
-#include "compare/engines.h"
+#include <algorithm>
 #include "compare/run_metrics.h"
 #include "mysim/scene_file.h"
 
@@ -18,7 +18,8 @@ using nlohmann::json;
 namespace fs = std::filesystem;
 
 std::expected<ToleranceCheck, std::string> readCheck(const json& j, const std::string& where,
-                                                     const fs::path& root) {
+                                                     const fs::path& root,
+                                                     const EngineRegistry& registry) {
   auto bad = [&](const std::string& field, const std::string& why) {
     return std::unexpected(where + "." + field + ": " + why);
   };
@@ -34,14 +35,14 @@ std::expected<ToleranceCheck, std::string> readCheck(const json& j, const std::s
   if (!j["scene"].is_string()) return bad("scene", "expected a path string");
   c.scene = (root / j["scene"].get<std::string>()).lexically_normal().string();
   if (!fs::exists(c.scene)) return bad("scene", "unknown scene: no file " + c.scene);
-  if (auto scene = mysim::loadScene(c.scene); !scene) return bad("scene", scene.error());
+  if (auto scene = registry.loadScene(c.scene); !scene) return bad("scene", scene.error());
 
   if (!j["engines"].is_array() || j["engines"].empty() || j["engines"].size() > 2) {
     return bad("engines", "expected a list of one or two engine names");
   }
   for (const json& e : j["engines"]) {
     if (!e.is_string()) return bad("engines", "expected engine names (strings)");
-    if (auto known_engine = checkEngineName(e.get<std::string>()); !known_engine) {
+    if (auto known_engine = registry.check(e.get<std::string>()); !known_engine) {
       return bad("engines", known_engine.error());
     }
     c.engines.push_back(e.get<std::string>());
@@ -74,7 +75,8 @@ std::expected<ToleranceCheck, std::string> readCheck(const json& j, const std::s
 
 std::expected<Tolerances, std::string> parseTolerances(const std::string& text,
                                                        const std::string& source,
-                                                       const std::string& base_dir) {
+                                                       const std::string& base_dir,
+                                                       EngineRegistry& registry) {
   json root;
   try {
     root = json::parse(text);
@@ -83,7 +85,8 @@ std::expected<Tolerances, std::string> parseTolerances(const std::string& text,
   }
   if (!root.is_object()) return std::unexpected(source + ": expected an object");
   for (auto it = root.begin(); it != root.end(); ++it) {
-    if (it.key() != "scene_root" && it.key() != "checks" && it.key() != "$comment") {
+    if (it.key() != "scene_root" && it.key() != "checks" && it.key() != "engines_file" &&
+        it.key() != "$comment") {
       return std::unexpected(source + ": " + it.key() + ": unknown field");
     }
   }
@@ -96,22 +99,37 @@ std::expected<Tolerances, std::string> parseTolerances(const std::string& text,
   if (!root.contains("checks") || !root["checks"].is_array() || root["checks"].empty()) {
     return std::unexpected(source + ": checks: expected a non-empty list of checks");
   }
-  Tolerances t{source, {}};
+  Tolerances t{source, {}, ""};
+  if (root.contains("engines_file")) {
+    if (!root["engines_file"].is_string()) {
+      return std::unexpected(source + ": engines_file: expected a path (relative to this file)");
+    }
+    t.engines_file =
+        (fs::path(base_dir) / root["engines_file"].get<std::string>()).lexically_normal().string();
+    const auto& read = registry.enginesFiles();
+    if (std::find(read.begin(), read.end(), t.engines_file) == read.end()) {
+      if (auto added = registry.addEnginesFile(t.engines_file); !added) {
+        return std::unexpected(source + ": engines_file: " + added.error());
+      }
+    }
+  }
   for (std::size_t k = 0; k < root["checks"].size(); ++k) {
     auto check =
-        readCheck(root["checks"][k], source + ": checks[" + std::to_string(k) + "]", scene_root);
+        readCheck(root["checks"][k], source + ": checks[" + std::to_string(k) + "]", scene_root,
+                  registry);
     if (!check) return std::unexpected(check.error());
     t.checks.push_back(std::move(*check));
   }
   return t;
 }
 
-std::expected<Tolerances, std::string> loadTolerances(const std::string& path) {
+std::expected<Tolerances, std::string> loadTolerances(const std::string& path,
+                                                      EngineRegistry& registry) {
   std::ifstream in(path);
   if (!in) return std::unexpected(path + ": cannot open the tolerances file");
   std::stringstream text;
   text << in.rdbuf();
-  return parseTolerances(text.str(), path, fs::path(path).parent_path().string());
+  return parseTolerances(text.str(), path, fs::path(path).parent_path().string(), registry);
 }
 
 }  // namespace springcheck

@@ -15,9 +15,12 @@ struct ViewOptions {
   double dt = 0.0;
   int frames = 0;
   std::string screenshot;
+  std::vector<std::string> engines_files;
 };
 
 int view(const ViewOptions& o) {
+  std::optional<springcheck::EngineRegistry> registry = makeRegistry(o.engines_files);
+  if (!registry) return kBadInput;
   std::vector<std::string> engines;
   std::stringstream list(o.engines);
   for (std::string e; std::getline(list, e, ',');) {
@@ -37,8 +40,14 @@ int view(const ViewOptions& o) {
       return kBadInput;
     }
   }
+  for (const std::string& e : engines) {
+    if (auto known = registry->check(e); !known) {
+      std::cerr << "error: --engines: " << known.error() << '\n';
+      return kBadInput;
+    }
+  }
   viewer::ViewerSession session(
-      scenes, o.scene, engines,
+      *registry, scenes, o.scene, engines,
       o.integrator.empty() ? "" : *mysim::canonicalIntegratorName(o.integrator), o.dt);
   if (!session.error().empty()) {
     std::cerr << "error: " << session.error() << '\n';
@@ -59,6 +68,7 @@ void addViewCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--dt", o->dt, "Step in s (overrides the scenes)")->check(kPositive);
   cmd->add_option("--frames", o->frames, "Run this many frames without a person, then close");
   cmd->add_option("--screenshot", o->screenshot, "With --frames: save the last frame as PNG");
+  addEnginesFileOption(cmd, o->engines_files);
   cmd->callback([o, &exit_code] { exit_code = view(*o); });
 }
 

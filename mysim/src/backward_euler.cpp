@@ -30,7 +30,6 @@ class BackwardEuler final : public Integrator {
  public:
   BackwardEuler(double tolerance, int max_iterations)
       : tolerance_(tolerance), max_iterations_(max_iterations) {}
-  bool needsParticles() const override { return true; }
 
   StepCounts step(OdeSystem& system, State& s, double h) override {
     ParticleSystem& ps = *system.particles();

@@ -29,4 +29,18 @@ Eigen::Matrix<double, Eigen::Dynamic, 6> CircleSystem::particleRows(const State&
 
 State CircleSystem::initialState() const { return State{0.0, start_}; }
 
+Model circleTwin(const Model& circle) {
+  Model twin;
+  twin.kind = SystemKind::Particles;
+  const Eigen::Vector2d p = circle.circle_start;
+  twin.mass = Vector::Ones(2);
+  twin.pinned = {1, 0};
+  twin.start_position = Vector::Zero(6);
+  twin.start_velocity = Vector::Zero(6);
+  at3(twin.start_position, kCircleTwinParticle) = Vec3(p.x(), p.y(), 0.0);
+  at3(twin.start_velocity, kCircleTwinParticle) = Vec3(-p.y(), p.x(), 0.0);
+  twin.springs.push_back(Spring{0, kCircleTwinParticle, 0.0, 1.0, 0.0, SpringFamily::Custom});
+  return twin;
+}
+
 }  // namespace mysim

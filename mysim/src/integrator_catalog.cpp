@@ -12,22 +12,35 @@ StepCounts& StepCounts::operator+=(const StepCounts& o) {
 }
 
 const std::vector<IntegratorInfo>& integratorCatalog() {
+  using S = const IntegratorSettings&;
   static const std::vector<IntegratorInfo> catalog = {
-      {"euler", "e", "forward Euler, order 1", false},
-      {"trapezoidal", "t", "trapezoidal rule (Heun), order 2", false},
-      {"rk4", "r", "classical Runge-Kutta, order 4", false},
-      {"symplectic-euler", "", "semi-implicit Euler, order 1, symplectic", true},
-      {"verlet", "", "velocity Verlet, order 2, symplectic", true},
-      {"backward-euler", "", "Baraff-Witkin implicit Euler (1 Newton step, CG), order 1", true},
-      {"dopri5", "", "adaptive Dormand-Prince 5(4), abs/rel tolerance", false},
+      {"euler", "e", "forward Euler, order 1", false, [](S) { return makeForwardEuler(); }},
+      {"trapezoidal", "t", "trapezoidal rule (Heun), order 2", false,
+       [](S) { return makeTrapezoidal(); }},
+      {"rk4", "r", "classical Runge-Kutta, order 4", false, [](S) { return makeRk4(); }},
+      {"symplectic-euler", "", "semi-implicit Euler, order 1, symplectic", true,
+       [](S) { return makeSymplecticEuler(); }},
+      {"verlet", "", "velocity Verlet, order 2, symplectic", true,
+       [](S) { return makeVelocityVerlet(); }},
+      {"backward-euler", "", "Baraff-Witkin implicit Euler (1 Newton step, CG), order 1", true,
+       [](S s) { return makeBackwardEuler(s.cg_tolerance, s.cg_max_iterations); }},
+      {"dopri5", "", "adaptive Dormand-Prince 5(4), abs/rel tolerance", false,
+       [](S s) { return makeDormandPrince(s.abs_tolerance, s.rel_tolerance); }},
   };
   return catalog;
 }
 
+const IntegratorInfo* findIntegrator(std::string_view name) {
+  for (const IntegratorInfo& info : integratorCatalog()) {
+    if (name == info.name || (!info.alias.empty() && name == info.alias)) return &info;
+  }
+  return nullptr;
+}
+
 std::expected<std::string, std::string> canonicalIntegratorName(std::string_view name) {
+  if (const IntegratorInfo* info = findIntegrator(name)) return info->name;
   std::string valid;
   for (const IntegratorInfo& info : integratorCatalog()) {
-    if (name == info.name || (!info.alias.empty() && name == info.alias)) return info.name;
     valid += (valid.empty() ? "" : ", ") + info.name;
     if (!info.alias.empty()) valid += " (" + info.alias + ")";
   }
@@ -37,17 +50,9 @@ std::expected<std::string, std::string> canonicalIntegratorName(std::string_view
 
 std::expected<std::unique_ptr<Integrator>, std::string> makeIntegrator(
     const IntegratorSettings& settings) {
-  auto name = canonicalIntegratorName(settings.name);
-  if (!name) return std::unexpected(name.error());
-  if (*name == "euler") return makeForwardEuler();
-  if (*name == "trapezoidal") return makeTrapezoidal();
-  if (*name == "rk4") return makeRk4();
-  if (*name == "symplectic-euler") return makeSymplecticEuler();
-  if (*name == "verlet") return makeVelocityVerlet();
-  if (*name == "backward-euler") {
-    return makeBackwardEuler(settings.cg_tolerance, settings.cg_max_iterations);
-  }
-  return makeDormandPrince(settings.abs_tolerance, settings.rel_tolerance);
+  const IntegratorInfo* info = findIntegrator(settings.name);
+  if (!info) return std::unexpected(canonicalIntegratorName(settings.name).error());
+  return info->make(settings);
 }
 
 }  // namespace mysim

@@ -52,13 +52,10 @@ State ParticleSystem::initialState() const {
 }
 
 Vec3 ParticleSystem::pinPosition(int particle, double t) const {
-  const Vec3 start = at3(model_.start_position, particle);
-  return model_.pin_motion ? Vec3(start + model_.pin_motion->offset(t)) : start;
+  return pinnedPosition(model_, particle, t);
 }
 
-Vec3 ParticleSystem::pinVelocity(double t) const {
-  return model_.pin_motion ? model_.pin_motion->velocity(t) : Vec3::Zero();
-}
+Vec3 ParticleSystem::pinVelocity(double t) const { return pinnedVelocity(model_, t); }
 
 void ParticleSystem::force(double t, Eigen::Ref<const Vector> x, Eigen::Ref<const Vector> v,
                            Eigen::Ref<Vector> f) const {

@@ -5,24 +5,12 @@
 
 namespace mysim {
 
-const char* systemKindName(SystemKind kind) {
-  switch (kind) {
-    case SystemKind::Circle:
-      return "circle";
-    case SystemKind::Chain:
-      return "chain";
-    case SystemKind::Cloth:
-      return "cloth";
-    case SystemKind::Particles:
-      return "particles";
-  }
-  return "?";
-}
-
 Model buildModel(const Scene& scene) {
   Model model;
+  model.kind = scene.kind;
   switch (scene.kind) {
     case SystemKind::Circle:
+      model.circle_start = scene.circle_start;
       break;
     case SystemKind::Chain:
       buildChain(scene.chain, model);
@@ -61,14 +49,9 @@ Model buildModel(const Scene& scene) {
   return model;
 }
 
-std::unique_ptr<OdeSystem> makeSystem(const Scene& scene) {
-  if (scene.kind == SystemKind::Circle) return std::make_unique<CircleSystem>(scene.circle_start);
-  return std::make_unique<ParticleSystem>(buildModel(scene), scene.limits);
-}
-
-State initialState(const Scene& scene, OdeSystem& system) {
-  if (scene.kind == SystemKind::Circle) return static_cast<CircleSystem&>(system).initialState();
-  return system.particles()->initialState();
+std::unique_ptr<OdeSystem> makeSystem(const Model& model, const BlowUpLimits& limits) {
+  if (model.isCircle()) return std::make_unique<CircleSystem>(model.circle_start);
+  return std::make_unique<ParticleSystem>(model, limits);
 }
 
 }  // namespace mysim

@@ -73,6 +73,14 @@ class ObjectReader {
     if (d < 0.0) fail(field(key), "a number >= 0", raw(key));
     return d;
   }
+  double inRange(const std::string& key, double low, double high) {
+    const double d = number(key);
+    if (d < low || d > high) {
+      fail(field(key), "a number in [" + std::to_string(low) + ", " + std::to_string(high) + "]",
+           raw(key));
+    }
+    return d;
+  }
   long integer(const std::string& key, long low, long high) {
     const json& v = raw(key);
     if (!v.is_number_integer() || v.get<long>() < low || v.get<long>() > high) {
@@ -344,7 +352,7 @@ void checkWhole(Scene& scene) {
   }
 }
 
-Scene readScene(const json& root) {
+Scene readScene(const json& root, const std::vector<EngineSection>& sections) {
   Scene scene;
   ObjectReader top(root, "");
   scene.name = top.text("name", "");
@@ -410,9 +418,19 @@ Scene readScene(const json& root) {
     scene.limits.max_energy_ratio = r.positive("max_energy_ratio", scene.limits.max_energy_ratio);
     r.refuseUnknown();
   }
-  if (top.has("bullet")) {
-    ObjectReader r = top.object("bullet");
-    scene.classic.iterations = static_cast<int>(r.integer("classic_iterations", 1, 10'000, 10));
+  for (const EngineSection& section : sections) {
+    std::map<std::string, double>& values = scene.engine_settings[section.name];
+    for (const EngineSetting& setting : section.settings) values[setting.key] = setting.fallback;
+    if (!top.has(section.name)) continue;
+    ObjectReader r = top.object(section.name);
+    for (const EngineSetting& setting : section.settings) {
+      if (!r.has(setting.key)) continue;
+      values[setting.key] =
+          setting.integer
+              ? static_cast<double>(r.integer(setting.key, static_cast<long>(setting.low),
+                                              static_cast<long>(setting.high)))
+              : r.inRange(setting.key, setting.low, setting.high);
+    }
     r.refuseUnknown();
   }
   top.refuseUnknown();
@@ -429,7 +447,8 @@ std::string stem(const std::string& path) {
 
 }  // namespace
 
-std::expected<Scene, std::string> parseScene(const std::string& text, const std::string& source) {
+std::expected<Scene, std::string> parseScene(const std::string& text, const std::string& source,
+                                             const std::vector<EngineSection>& sections) {
   json root;
   try {
     root = json::parse(text);
@@ -437,7 +456,7 @@ std::expected<Scene, std::string> parseScene(const std::string& text, const std:
     return std::unexpected(source + ": not valid JSON: " + e.what());
   }
   try {
-    Scene scene = readScene(root);
+    Scene scene = readScene(root, sections);
     scene.source = source;
     if (scene.name.empty()) scene.name = stem(source);
     return scene;
@@ -446,12 +465,13 @@ std::expected<Scene, std::string> parseScene(const std::string& text, const std:
   }
 }
 
-std::expected<Scene, std::string> loadScene(const std::string& path) {
+std::expected<Scene, std::string> loadScene(const std::string& path,
+                                            const std::vector<EngineSection>& sections) {
   std::ifstream in(path);
   if (!in) return std::unexpected(path + ": cannot open the scene file");
   std::stringstream text;
   text << in.rdbuf();
-  return parseScene(text.str(), path);
+  return parseScene(text.str(), path, sections);
 }
 
 }  // namespace mysim

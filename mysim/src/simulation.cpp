@@ -5,11 +5,11 @@
 #include <cmath>
 
 namespace mysim {
-namespace {
-
 long stepCount(const RunSettings& settings) {
   return std::max(1L, std::lround(settings.duration / settings.dt));
 }
+
+namespace {
 
 void recordFrame(OdeSystem& system, const State& state, double external_work, RunRecord& record) {
   record.times.push_back(state.t);
@@ -29,8 +29,7 @@ long sampleStride(const RunSettings& settings) {
   return std::max(1L, stepCount(settings) / 200);
 }
 
-RunRecord simulate(OdeSystem& system, Integrator& integrator, State state,
-                   const RunSettings& settings) {
+RunRecord simulate(OdeSystem& system, Stepper& stepper, State state, const RunSettings& settings) {
   using Clock = std::chrono::steady_clock;
   RunRecord record;
   record.dt = settings.dt;
@@ -48,7 +47,7 @@ RunRecord simulate(OdeSystem& system, Integrator& integrator, State state,
   for (long step = 1; step <= steps; ++step) {
     if (driven) before = state;
     const auto start = Clock::now();
-    record.counts += integrator.step(system, state, settings.dt);
+    record.counts += stepper.step(state, settings.dt);
     stepping += Clock::now() - start;
     record.steps = step;
     if (driven) external_work += system.externalWork(before, state);

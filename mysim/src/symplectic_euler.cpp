@@ -8,7 +8,6 @@ namespace {
 // First order, but symplectic: an undamped oscillator's energy stays bounded for h w < 2.
 class SymplecticEuler final : public Integrator {
  public:
-  bool needsParticles() const override { return true; }
   StepCounts step(OdeSystem& system, State& s, double h) override {
     ParticleSystem& ps = *system.particles();
     const int n3 = 3 * ps.particleCount();

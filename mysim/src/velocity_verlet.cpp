@@ -12,7 +12,6 @@ namespace {
 // second order (evaluating at v_half instead would err by O(h^2) a step: first order).
 class VelocityVerlet final : public Integrator {
  public:
-  bool needsParticles() const override { return true; }
   StepCounts step(OdeSystem& system, State& s, double h) override {
     ParticleSystem& ps = *system.particles();
     const int n3 = 3 * ps.particleCount();

@@ -18,7 +18,7 @@ namespace {
 
 class ClassicStepper final : public BulletStepper {
  public:
-  ClassicStepper(const mysim::Scene& scene, const mysim::Model& model) : wind_(model.wind) {
+  ClassicStepper(const mysim::Model& model, const BulletSettings& settings) : model_(model) {
     config_ = std::make_unique<btSoftBodyRigidBodyCollisionConfiguration>();
     dispatcher_ = std::make_unique<btCollisionDispatcher>(config_.get());
     broadphase_ = std::make_unique<btDbvtBroadphase>();
@@ -35,11 +35,12 @@ class ClassicStepper final : public BulletStepper {
 
     // Materials shared by links of equal kLST (a cloth has a handful).
     std::map<double, btSoftBody::Material*> materials;
-    const double h = scene.dt;
+    const double h = settings.dt;
+    const int iterations = settings.classic_iterations;
     auto material = [&](btSoftBody& body, const mysim::Spring& s) {
       const double w = (model.pinned[s.i] ? 0.0 : 1.0 / model.mass[s.i]) +
                        (model.pinned[s.j] ? 0.0 : 1.0 / model.mass[s.j]);
-      const double k_lst = classicLinkStiffness(s.stiffness, h, w, scene.classic.iterations);
+      const double k_lst = classicLinkStiffness(s.stiffness, h, w, iterations);
       btSoftBody::Material*& m = materials[k_lst];
       if (!m) {
         m = body.appendMaterial();
@@ -49,7 +50,7 @@ class ClassicStepper final : public BulletStepper {
       return m;
     };
     body_.reset(buildSoftBody(info, model, material));
-    body_->m_cfg.piterations = scene.classic.iterations;
+    body_->m_cfg.piterations = iterations;
     body_->setActivationState(DISABLE_DEACTIVATION);
     body_->getCollisionShape()->setMargin(model.sphere ? std::max(model.sphere->margin, 1e-4)
                                                        : 1e-3);
@@ -75,7 +76,7 @@ class ClassicStepper final : public BulletStepper {
     }
     notes_.push_back(
         "springs mapped to links with kLST = 1 - (1 - a)^(1/n), a = k h^2 w / (1 + k h^2 w), n = " +
-        std::to_string(scene.classic.iterations));
+        std::to_string(iterations));
     world_->addSoftBody(body_.get());
   }
 
@@ -84,14 +85,13 @@ class ClassicStepper final : public BulletStepper {
     sphere_.reset();
   }
 
-  mysim::StepCounts step(mysim::OdeSystem& system, mysim::State& state, double h) override {
-    const mysim::ParticleSystem& particles = *system.particles();
-    if (wind_) {
-      for (int p = 0; p < particles.particleCount(); ++p) {
-        body_->addForce(toBt(mysim::windForce(*wind_, p, state.t)), p);
+  mysim::StepCounts step(mysim::State& state, double h) override {
+    if (model_.wind) {
+      for (int p = 0; p < model_.particleCount(); ++p) {
+        body_->addForce(toBt(mysim::windForce(*model_.wind, p, state.t)), p);
       }
     }
-    stepWorld(*world_, *body_, particles, state, h);
+    stepWorld(*world_, *body_, model_, state, h);
     return {.accepted = 1};
   }
 
@@ -99,7 +99,7 @@ class ClassicStepper final : public BulletStepper {
   const std::vector<std::string>& notes() const override { return notes_; }
 
  private:
-  std::optional<mysim::Wind> wind_;
+  mysim::Model model_;  // pins follow its pin motion; wind from its wind
   std::vector<std::string> notes_;
   std::unique_ptr<btSoftBodyRigidBodyCollisionConfiguration> config_;
   std::unique_ptr<btCollisionDispatcher> dispatcher_;
@@ -112,9 +112,9 @@ class ClassicStepper final : public BulletStepper {
 
 }  // namespace
 
-std::unique_ptr<BulletStepper> makeClassicStepper(const mysim::Scene& scene,
-                                                  const mysim::Model& model) {
-  return std::make_unique<ClassicStepper>(scene, model);
+std::unique_ptr<BulletStepper> makeClassicStepper(const mysim::Model& model,
+                                                  const BulletSettings& settings) {
+  return std::make_unique<ClassicStepper>(model, settings);
 }
 
 }  // namespace reference

@@ -1,12 +1,14 @@
 #pragma once
 #include <BulletSoftBody/btDeformableLagrangianForce.h>
 
+#include <vector>
+
 #include "mysim/wind.h"
 
 namespace reference {
 
 // Forces the deformable world lacks, written against its Lagrangian force interface. Their types
-// must differ from Bullet's own (1..6), since addForce merges forces of one type: 7 and 8.
+// must differ from Bullet's own (1..6), since addForce merges forces of one type: 7, 8 and 9.
 
 // mysim's gusting wind as a Bullet deformable force: the deformable world ignores
 // btSoftBody::setWindVelocity, so the same per-particle force enters through a Lagrangian force.
@@ -64,6 +66,52 @@ class DeformableDragForce final : public btDeformableLagrangianForce {
     }
   }
   double drag_;  // N s/m
+};
+
+// Damped Hooke springs with a stiffness and a damping per link (link k = model spring k), for
+// models btDeformableMassSpringForce cannot hold (it has one stiffness for non-bending links, one
+// for bending links, one damping). The force law is mysim's and Bullet's alike:
+//   F_1 = k (|d| - rest) d/|d| + c ((v2 - v1).u) u,   d = x2 - x1, u = d/|d|,   F_2 = -F_1
+// with the same split as Bullet's own force: the elastic part from the predicted positions m_q,
+// the damping part along the current link direction from m_x, so with uniform parameters it
+// gives Bullet's trajectories to round-off (tested). Differentials, for the implicit solve:
+//   elastic  dF_1 = -k [ u u^T + (1 - rest/|d|)(I - u u^T) ] (dx_1 - dx_2)
+//   damping  dF_1 = c u u^T (dv_2 - dv_1)
+class DeformableLinkSpringForce final : public btDeformableLagrangianForce {
+ public:
+  struct LinkParameters {
+    double stiffness, damping;  // N/m, N s/m
+  };
+  explicit DeformableLinkSpringForce(std::vector<LinkParameters> links)
+      : links_(std::move(links)) {}
+
+  void addScaledForces(btScalar scale, TVStack& force) override {
+    addScaledDampingForce(scale, force);
+    addScaledElasticForce(scale, force);
+  }
+  void addScaledExplicitForce(btScalar scale, TVStack& force) override {
+    addScaledElasticForce(scale, force);
+  }
+  void addScaledDampingForce(btScalar scale, TVStack& force) override;
+  void addScaledDampingForceDifferential(btScalar scale, const TVStack& dv, TVStack& df) override;
+  void buildDampingForceDifferentialDiagonal(btScalar scale, TVStack& diagonal) override;
+  void addScaledElasticForceDifferential(btScalar scale, const TVStack& dx, TVStack& df) override;
+  double totalEnergy(btScalar) override { return 0.0; }  // springcheck computes energy itself
+  btDeformableLagrangianForceType getForceType() override {
+    return static_cast<btDeformableLagrangianForceType>(9);
+  }
+
+ private:
+  void addScaledElasticForce(btScalar scale, TVStack& force) const;
+  // Calls f(link, its parameters) for every link of every body.
+  template <typename F>
+  void forLinks(F f) const {
+    for (int b = 0; b < m_softBodies.size(); ++b) {
+      const btSoftBody* body = m_softBodies[b];
+      for (int k = 0; k < body->m_links.size(); ++k) f(body->m_links[k], links_[k]);
+    }
+  }
+  std::vector<LinkParameters> links_;
 };
 
 }  // namespace reference

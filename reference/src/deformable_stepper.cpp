@@ -1,5 +1,8 @@
 // bullet-deformable and bullet-implicit: btDeformableMultiBodyDynamicsWorld with Bullet's own
-// mass-spring and gravity forces, set up in the order shared/bullet-notes.md gives.
+// mass-spring and gravity forces, set up in the order docs/reference.md gives. Springs Bullet's
+// mass-spring force cannot hold (a stiffness per family, a damping per link) go through our
+// per-link spring force on Bullet's force interface; the solver, contacts and stepping stay
+// Bullet's.
 #include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
 #include <BulletSoftBody/btDeformableBodySolver.h>
 #include <BulletSoftBody/btDeformableGravityForce.h>
@@ -31,7 +34,8 @@ class TunedDeformableSolver final : public btDeformableBodySolver {
 
 class DeformableStepper final : public BulletStepper {
  public:
-  DeformableStepper(const mysim::Scene& scene, const mysim::Model& model, bool implicit) {
+  DeformableStepper(const mysim::Model& model, const BulletSettings& settings, bool implicit)
+      : model_(model) {
     config_ = std::make_unique<btSoftBodyRigidBodyCollisionConfiguration>();
     dispatcher_ = std::make_unique<btCollisionDispatcher>(config_.get());
     broadphase_ = std::make_unique<btDbvtBroadphase>();
@@ -63,23 +67,29 @@ class DeformableStepper final : public BulletStepper {
       if (implicit) {
         notes_.push_back(
             "implicit mode against a static sphere exploded in most set-ups tried "
-            "(shared/bullet-notes.md); a blow-up here is Bullet's, reported as is");
+            "(docs/reference.md); a blow-up here is Bullet's, reported as is");
       }
     }
     world_->addSoftBody(body_.get());
 
-    // Bullet's mass-spring force: one stiffness for non-bending links, one for bending (flex)
-    // links, one damping (checkSupported refused anything else); damping along the link
-    // (conserve_angular = true), as mysim's.
-    double k = 0.0, k_bending = -1.0, c = 0.0;
-    for (const mysim::Spring& s : model.springs) {
-      (s.family == mysim::SpringFamily::Flex ? k_bending : k) = s.stiffness;
-      c = s.damping;
-    }
-    if (k == 0.0) k = k_bending;  // only flex springs: the other stiffness is unused
-    if (!model.springs.empty()) {
-      mass_spring_ = std::make_unique<btDeformableMassSpringForce>(k, c, true, k_bending);
+    // Bullet's mass-spring force where it holds the model (one stiffness for non-bending links,
+    // one for bending (flex) links, one damping; damping along the link, conserve_angular =
+    // true, as mysim's); otherwise ours, link by link.
+    const std::optional<UniformSprings> uniform = uniformSprings(model);
+    if (model.springs.empty()) {
+    } else if (uniform && !settings.force_per_link_springs) {
+      mass_spring_ = std::make_unique<btDeformableMassSpringForce>(
+          uniform->stiffness, uniform->damping, true, uniform->bending_stiffness);
       world_->addForce(body_.get(), mass_spring_.get());
+    } else {
+      std::vector<DeformableLinkSpringForce::LinkParameters> links;
+      for (const mysim::Spring& s : model.springs) links.push_back({s.stiffness, s.damping});
+      link_springs_ = std::make_unique<DeformableLinkSpringForce>(std::move(links));
+      world_->addForce(body_.get(), link_springs_.get());
+      notes_.push_back(
+          "springs through springcheck's per-link spring force on Bullet's force interface "
+          "(the force law is ours, a stiffness and damping per link; the solver, contacts and "
+          "time stepping are Bullet's)");
     }
     gravity_ = std::make_unique<btDeformableGravityForce>(g);
     world_->addForce(body_.get(), gravity_.get());
@@ -96,7 +106,7 @@ class DeformableStepper final : public BulletStepper {
     world_->setLineSearch(false);
     world_->setUseProjection(implicit);  // implicit without projection does not move at all
     // One Newton step: Baraff-Witkin's linearised backward Euler, as mysim's backward-euler.
-    solver_->tune(scene.integrator.cg_tolerance, scene.integrator.cg_max_iterations, 1);
+    solver_->tune(settings.cg_tolerance, settings.cg_max_iterations, 1);
   }
 
   ~DeformableStepper() override {
@@ -104,10 +114,9 @@ class DeformableStepper final : public BulletStepper {
     sphere_.reset();
   }
 
-  mysim::StepCounts step(mysim::OdeSystem& system, mysim::State& state, double h) override {
-    const mysim::ParticleSystem& particles = *system.particles();
+  mysim::StepCounts step(mysim::State& state, double h) override {
     time_ = state.t;
-    stepWorld(*world_, *body_, particles, state, h);
+    stepWorld(*world_, *body_, model_, state, h);
     return {.accepted = 1};
   }
 
@@ -115,6 +124,7 @@ class DeformableStepper final : public BulletStepper {
   const std::vector<std::string>& notes() const override { return notes_; }
 
  private:
+  mysim::Model model_;  // pins follow its pin motion
   double time_ = 0.0;
   std::vector<std::string> notes_;
   std::unique_ptr<btSoftBodyRigidBodyCollisionConfiguration> config_;
@@ -125,6 +135,7 @@ class DeformableStepper final : public BulletStepper {
   std::unique_ptr<btDeformableMultiBodyDynamicsWorld> world_;
   std::unique_ptr<btSoftBody> body_;
   std::unique_ptr<btDeformableMassSpringForce> mass_spring_;
+  std::unique_ptr<DeformableLinkSpringForce> link_springs_;
   std::unique_ptr<btDeformableGravityForce> gravity_;
   std::unique_ptr<DeformableWindForce> wind_;
   std::unique_ptr<DeformableDragForce> drag_;
@@ -133,9 +144,10 @@ class DeformableStepper final : public BulletStepper {
 
 }  // namespace
 
-std::unique_ptr<BulletStepper> makeDeformableStepper(const mysim::Scene& scene,
-                                                     const mysim::Model& model, bool implicit) {
-  return std::make_unique<DeformableStepper>(scene, model, implicit);
+std::unique_ptr<BulletStepper> makeDeformableStepper(const mysim::Model& model,
+                                                     const BulletSettings& settings,
+                                                     bool implicit) {
+  return std::make_unique<DeformableStepper>(model, settings, implicit);
 }
 
 }  // namespace reference

@@ -34,30 +34,30 @@ btSoftBody* buildSoftBody(
   return body;
 }
 
-void drivePins(btSoftBody& body, const mysim::ParticleSystem& system, double t, double h) {
-  if (!system.model().pin_motion) return;
-  for (int p = 0; p < system.particleCount(); ++p) {
-    if (!system.model().pinned[p]) continue;
+void drivePins(btSoftBody& body, const mysim::Model& model, double t, double h) {
+  if (!model.pin_motion) return;
+  for (int p = 0; p < model.particleCount(); ++p) {
+    if (!model.pinned[p]) continue;
     btSoftBody::Node& node = body.m_nodes[p];
-    node.m_v = (toBt(system.pinPosition(p, t + h)) - node.m_x) / h;
+    node.m_v = (toBt(mysim::pinnedPosition(model, p, t + h)) - node.m_x) / h;
   }
 }
 
-void placePins(btSoftBody& body, const mysim::ParticleSystem& system, double t) {
-  for (int p = 0; p < system.particleCount(); ++p) {
-    if (!system.model().pinned[p]) continue;
+void placePins(btSoftBody& body, const mysim::Model& model, double t) {
+  for (int p = 0; p < model.particleCount(); ++p) {
+    if (!model.pinned[p]) continue;
     btSoftBody::Node& node = body.m_nodes[p];
-    node.m_x = node.m_q = toBt(system.pinPosition(p, t));
-    node.m_v = node.m_vn = toBt(system.pinVelocity(t));
+    node.m_x = node.m_q = toBt(mysim::pinnedPosition(model, p, t));
+    node.m_v = node.m_vn = toBt(mysim::pinnedVelocity(model, t));
   }
 }
 
-void stepWorld(btDiscreteDynamicsWorld& world, btSoftBody& body,
-               const mysim::ParticleSystem& system, mysim::State& state, double h) {
-  drivePins(body, system, state.t, h);
+void stepWorld(btDiscreteDynamicsWorld& world, btSoftBody& body, const mysim::Model& model,
+               mysim::State& state, double h) {
+  drivePins(body, model, state.t, h);
   world.stepSimulation(h, 0);
   state.t += h;
-  placePins(body, system, state.t);
+  placePins(body, model, state.t);
   readNodes(body, state);
 }
 

@@ -4,7 +4,8 @@
 
 #include <functional>
 
-#include "mysim/particle_system.h"
+#include "mysim/model.h"
+#include "mysim/state.h"
 
 namespace reference {
 
@@ -14,22 +15,22 @@ inline btVector3 toBt(const mysim::Vec3& v) { return btVector3(v.x(), v.y(), v.z
 // link per spring with `material(spring)`, flex springs flagged as bending links. Rest lengths are
 // the model's own: Bullet resets them to the current distances whenever it updates its constants,
 // so this calls updateConstants() itself, then writes the model's rest lengths back and clears
-// the pending-update flag (the pitfall in shared/bullet-notes.md).
+// the pending-update flag (the pitfall in docs/reference.md).
 btSoftBody* buildSoftBody(
     btSoftBodyWorldInfo& info, const mysim::Model& model,
     const std::function<btSoftBody::Material*(btSoftBody&, const mysim::Spring&)>& material);
 
 // Pinned nodes follow the pin motion: before a step, their velocity is set to land exactly on the
 // prescribed position at t + h; after it, position and velocity are set to the prescription.
-void drivePins(btSoftBody& body, const mysim::ParticleSystem& system, double t, double h);
-void placePins(btSoftBody& body, const mysim::ParticleSystem& system, double t);
+void drivePins(btSoftBody& body, const mysim::Model& model, double t, double h);
+void placePins(btSoftBody& body, const mysim::Model& model, double t);
 
 // Copies node positions and velocities into y = [x; v].
 void readNodes(const btSoftBody& body, mysim::State& state);
 
 // One scene step of a Bullet world: pins driven to land on x(t + h), exactly one
 // stepSimulation(h, 0), pins placed exactly, node state copied into `state`.
-void stepWorld(btDiscreteDynamicsWorld& world, btSoftBody& body,
-               const mysim::ParticleSystem& system, mysim::State& state, double h);
+void stepWorld(btDiscreteDynamicsWorld& world, btSoftBody& body, const mysim::Model& model,
+               mysim::State& state, double h);
 
 }  // namespace reference

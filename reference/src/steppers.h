@@ -3,10 +3,11 @@
 
 namespace reference {
 
-// One file each; the scene has passed checkSupported() for the engine.
-std::unique_ptr<BulletStepper> makeDeformableStepper(const mysim::Scene& scene,
-                                                     const mysim::Model& model, bool implicit);
-std::unique_ptr<BulletStepper> makeClassicStepper(const mysim::Scene& scene,
-                                                  const mysim::Model& model);
+// One file each; the model has passed checkSupported() for the engine, and is not the circle.
+std::unique_ptr<BulletStepper> makeDeformableStepper(const mysim::Model& model,
+                                                     const BulletSettings& settings,
+                                                     bool implicit);
+std::unique_ptr<BulletStepper> makeClassicStepper(const mysim::Model& model,
+                                                  const BulletSettings& settings);
 
 }  // namespace reference

@@ -5,16 +5,15 @@
 #include <cmath>
 
 #include "mysim/particle_system.h"
-#include "mysim/scene_file.h"
 #include "mysim/sphere_collider.h"
-#include "reference/bullet_engine.h"
 
 namespace viewer {
 
-ViewerSession::ViewerSession(std::vector<std::string> scenes, const std::string& first,
-                             std::vector<std::string> engines, const std::string& integrator,
-                             double dt)
-    : scenes_(std::move(scenes)),
+ViewerSession::ViewerSession(springcheck::EngineRegistry registry, std::vector<std::string> scenes,
+                             const std::string& first, std::vector<std::string> engines,
+                             const std::string& integrator, double dt)
+    : registry_(std::move(registry)),
+      scenes_(std::move(scenes)),
       engine_names_(std::move(engines)),
       integrator_(integrator),
       requested_dt_(dt) {
@@ -25,7 +24,7 @@ ViewerSession::ViewerSession(std::vector<std::string> scenes, const std::string&
 }
 
 void ViewerSession::load() {
-  auto scene = mysim::loadScene(scenes_[scene_index_]);
+  auto scene = registry_.loadScene(scenes_[scene_index_]);
   error_.clear();
   if (!scene) {
     error_ = scene.error();
@@ -63,30 +62,18 @@ void ViewerSession::build() {
     scene_.pin_motion = file_scene_.pin_motion;
   }
   engines_.clear();
+  const mysim::Model model = mysim::buildModel(scene_);
+  const springcheck::RunConfig config = springcheck::runConfig(scene_);
   for (const std::string& name : engine_names_) {
     EngineView view;
     view.engine = name;
-    if (name == "mysim") {
-      view.system = mysim::makeSystem(scene_);
-      view.integrator = std::move(mysim::makeIntegrator(scene_.integrator).value());
-      view.state = mysim::initialState(scene_, *view.system);
-    } else if (auto engine = reference::bulletEngineNamed(name)) {
-      if (scene_.kind == mysim::SystemKind::Circle) {
-        view.refused = "the circle is a first-order ODE, not a soft body";
-      } else {
-        auto system =
-            std::make_unique<mysim::ParticleSystem>(mysim::buildModel(scene_), scene_.limits);
-        auto stepper = reference::makeBulletStepper(scene_, system->model(), *engine);
-        if (stepper) {
-          view.state = system->initialState();
-          view.integrator = std::move(*stepper);
-          view.system = std::move(system);
-        } else {
-          view.refused = stepper.error();
-        }
-      }
+    auto instance = registry_.build(name, model, config);
+    if (instance) {
+      view.system = std::move(instance->system);
+      view.stepper = std::move(instance->stepper);
+      view.state = instance->start;
     } else {
-      view.refused = "unknown engine";
+      view.refused = instance.error().message;
     }
     engines_.push_back(std::move(view));
   }
@@ -115,7 +102,7 @@ void ViewerSession::stepOnce() {
   for (EngineView& e : engines_) {
     if (!e.running()) continue;
     const auto start = std::chrono::steady_clock::now();
-    e.integrator->step(*e.system, e.state, dt_);
+    e.stepper->step(e.state, dt_);
     e.step_seconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (auto bad = e.system->checkHealth(e.state)) {

@@ -2,7 +2,7 @@
 #include <optional>
 #include <string>
 
-#include "mysim/scene.h"
+#include "mysim/model.h"
 #include "mysim/simulation.h"
 
 namespace springcheck {
@@ -18,7 +18,9 @@ struct ClosedFormError {
   double error = 0.0;    // m for positions, relative for the period
   double exact = 0.0;    // the closed-form value compared against (end position or period)
 };
-std::optional<ClosedFormError> closedFormError(const mysim::Scene& scene,
+// Read from the model (so a sweep's scaled model gets its own closed form): a chain of equal
+// springs and masses, pinned at particle 0 only, with no wind, pin motion or sphere.
+std::optional<ClosedFormError> closedFormError(const mysim::Model& model,
                                                const mysim::RunRecord& run);
 
 // Complete elliptic integral of the first kind K(k), by the arithmetic-geometric mean.

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "compare/engine_registry.h"
 #include "compare/run_metrics.h"
 
 namespace springcheck {
@@ -13,19 +14,22 @@ struct Comparison {
   mysim::Scene scene;
   mysim::Model model;
   std::vector<EngineRun> runs;
-  // Engines that cannot run the scene, with their message (which names engine and field).
+  // Engines that cannot run the scene, with their message (which names engine and field), and
+  // external engines that ran and failed (crashed, timed out, returned a bad result).
   struct Refusal {
     std::string engine, reason;
   };
   std::vector<Refusal> refused;
+  std::vector<Refusal> failed;
   std::vector<EngineMetrics> engines;
   std::vector<PairMetrics> pairs;  // every pair of runs that did not blow up
 };
 
-// Runs the engines; an engine that refuses the scene is listed in `refused`, not an error. Fails
-// only when an engine name is unknown.
+// Runs the engines; an engine that refuses the scene is listed in `refused`, one that fails in
+// `failed`, not an error. Fails only when an engine name is unknown.
 [[nodiscard]] std::expected<Comparison, std::string> compareScene(
-    const mysim::Scene& scene, const std::vector<std::string>& engines);
+    const EngineRegistry& registry, const mysim::Scene& scene,
+    const std::vector<std::string>& engines);
 
 void printComparison(std::ostream& out, const Comparison& c);
 

@@ -21,7 +21,7 @@ struct GateReport {
 };
 
 // Runs each scene once in every engine its checks name, then checks every bound.
-GateReport runGate(const Tolerances& tolerances);
+GateReport runGate(const EngineRegistry& registry, const Tolerances& tolerances);
 void printGate(std::ostream& out, const GateReport& report);
 
 }  // namespace springcheck

@@ -1,4 +1,5 @@
 #pragma once
+#include <expected>
 #include <functional>
 #include <ostream>
 #include <string>
@@ -15,5 +16,16 @@ namespace springcheck {
 // float64 values), so a large trajectory is not copied into one buffer first.
 [[nodiscard]] bool writeNpy(const std::string& path, const std::vector<long>& shape,
                             const std::function<void(std::ostream&)>& write_data);
+
+// A float64 array read from a .npy file.
+struct NpyArray {
+  std::vector<long> shape;
+  std::vector<double> data;  // C order
+};
+
+// Reads a .npy file of little-endian float64 ('<f8') in C order, format 1.0, 2.0 or 3.0 (what
+// numpy.save writes for float64 arrays). Refuses, naming the file, any other type, a Fortran-
+// order array, a malformed header, or data shorter or longer than the shape says.
+[[nodiscard]] std::expected<NpyArray, std::string> readNpy(const std::string& path);
 
 }  // namespace springcheck

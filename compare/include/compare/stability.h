@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "compare/engine_registry.h"
 #include "mysim/scene.h"
 
 namespace springcheck {
@@ -39,12 +40,14 @@ struct StabilitySettings {
 };
 
 // Largest stable step by bisection (in log h) for one integrator on the oscillator.
-StabilityLimit oscillatorStability(const std::string& integrator, double stiffness, double mass,
+StabilityLimit oscillatorStability(const EngineRegistry& registry, const std::string& integrator,
+                                   double stiffness, double mass,
                                    double damping_ratio, const StabilitySettings& settings);
 
-// The same on a scene whose springs all get `stiffness` and particles `mass` (0: keep the
-// scene's), over the scene's duration; stable = no blow-up (the run's health checks).
-StabilityLimit sceneStability(const mysim::Scene& scene, const std::string& integrator,
+// The same on a model whose springs all get `stiffness` and particles `mass` (0: keep the
+// model's), over the run's duration; stable = no blow-up (the run's health checks).
+StabilityLimit sceneStability(const EngineRegistry& registry, const mysim::Model& model,
+                              const RunConfig& config, const std::string& integrator,
                               double stiffness, double mass, double h_min, double h_max,
                               double precision);
 

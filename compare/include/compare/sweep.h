@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "compare/engine_registry.h"
 #include "mysim/scene.h"
 
 namespace springcheck {
@@ -17,8 +18,10 @@ struct SweepSpec {
   std::string name;
   std::vector<std::string> scenes;             // paths, resolved against the spec's directory
   std::map<std::string, mysim::Scene> loaded;  // each scene, read and validated once
-  std::vector<std::string> engines;            // "mysim" and/or Bullet engines
-  std::vector<std::string> integrators;        // mysim integrators
+  std::vector<std::string> engines;            // registry engines (mysim, Bullet, the user's)
+  std::vector<std::string> integrators;        // for the engines that take one (mysim)
+  std::vector<std::string> integrator_engines;  // those of `engines` that take an integrator
+  std::string engines_file;                     // the user's engines the spec names, if any
   std::vector<double> dts;                     // s
   std::vector<double> stiffness_scales{1.0};   // every spring's stiffness times this
   std::optional<double> duration;              // s, overrides the scenes'
@@ -30,7 +33,9 @@ struct SweepSpec {
   int reference_refine = 16;
 };
 
-[[nodiscard]] std::expected<SweepSpec, std::string> loadSweepSpec(const std::string& path);
+// An `engines_file` the spec names (relative to the spec) is added to `registry`.
+[[nodiscard]] std::expected<SweepSpec, std::string> loadSweepSpec(const std::string& path,
+                                                                  EngineRegistry& registry);
 
 // One run of the grid. `id` is its place in the full grid (stable across shards and resumes).
 struct SweepCase {
@@ -43,10 +48,16 @@ struct SweepCase {
 };
 std::vector<SweepCase> expandSweep(const SweepSpec& spec);
 
-// The scene of a case: the file with the case's integrator, step, stiffness and the spec's
-// duration and sampling applied.
-[[nodiscard]] std::expected<mysim::Scene, std::string> caseScene(const SweepSpec& spec,
-                                                                 const SweepCase& c);
+// What a case runs: the scene file (for its name and metrics), its model with the case's
+// stiffness scale, and the run config with the case's integrator and step and the spec's
+// duration and sampling.
+struct CaseRun {
+  mysim::Scene scene;
+  mysim::Model model;
+  RunConfig config;
+};
+[[nodiscard]] std::expected<CaseRun, std::string> caseRun(const SweepSpec& spec,
+                                                          const SweepCase& c);
 
 // Results table: one row per case, in this column order.
 const std::vector<std::string>& sweepColumns();
@@ -63,7 +74,8 @@ struct SweepOptions {
 // Runs the (remaining) cases of the spec in parallel, appending each finished row to `out_csv`
 // as soon as it is done (so an interrupted sweep loses only runs in flight), then rewrites the
 // file sorted by case id. Returns the number of cases run now.
-[[nodiscard]] std::expected<int, std::string> runSweep(const SweepSpec& spec,
+[[nodiscard]] std::expected<int, std::string> runSweep(const EngineRegistry& registry,
+                                                       const SweepSpec& spec,
                                                        const std::string& out_csv,
                                                        const SweepOptions& options);
 

@@ -1,4 +1,5 @@
 #pragma once
+#include "mysim/model.h"
 #include "mysim/ode_system.h"
 
 namespace mysim {
@@ -15,10 +16,19 @@ class CircleSystem final : public OdeSystem {
   std::optional<EnergyTerms> energy(const State&) const override { return std::nullopt; }
   Eigen::Matrix<double, Eigen::Dynamic, 6> particleRows(const State& state) override;
 
-  State initialState() const;
+  State initialState() const override;
 
  private:
   Eigen::Vector2d start_;
 };
+
+// The circle as a mechanical system, for engines that simulate only particles and springs: a
+// unit mass on a zero-length spring of stiffness 1 from a pin at the origin (particle 0),
+// started at (x0, y0, 0) with velocity (-y0, x0, 0) (particle 1). Its position obeys x'' = -x,
+// whose solution from that start is the circle's, and any linear one-step method applied to it
+// changes the radius by the same factor per step as on the first-order form (each coordinate is
+// an oscillator whose phase point turns like the circle's).
+Model circleTwin(const Model& circle);
+constexpr int kCircleTwinParticle = 1;  // the particle that traces the circle
 
 }  // namespace mysim

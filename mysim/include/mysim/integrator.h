@@ -1,5 +1,6 @@
 #pragma once
 #include <expected>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -34,17 +35,18 @@ class Integrator {
  public:
   virtual ~Integrator() = default;
   virtual StepCounts step(OdeSystem& system, State& state, double h) = 0;
-  // Second-order methods need a ParticleSystem.
-  virtual bool needsParticles() const { return false; }
 };
 
+// One row per integrator: adding one takes its own file (a make... factory) and a row here.
 struct IntegratorInfo {
   std::string name;
   std::string alias;  // the seed's one-letter name, if any
   std::string description;
-  bool needs_particles;
+  bool needs_particles;  // second-order methods need a ParticleSystem (x' = v, v' = a)
+  std::function<std::unique_ptr<Integrator>(const IntegratorSettings&)> make;
 };
 const std::vector<IntegratorInfo>& integratorCatalog();
+const IntegratorInfo* findIntegrator(std::string_view name);  // by name or alias
 
 // Canonical name for a name or alias, or an error listing the valid ones.
 std::expected<std::string, std::string> canonicalIntegratorName(std::string_view name);

@@ -1,5 +1,6 @@
 #pragma once
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "mysim/pin_motion.h"
@@ -17,9 +18,18 @@ struct GridShape {
   int cols = 0;
 };
 
-// The built model: what does not change while stepping. Sizes in comments, N particles.
-// Optional force terms are absent unless the scene names them, and then cost nothing.
+// What a scene simulates. Circle: the seed's first-order ODE x' = -y, y' = x (no particles);
+// the others are particles under springs.
+enum class SystemKind { Circle, Chain, Cloth, Particles };
+const char* systemKindName(SystemKind kind);
+
+// The built model: what does not change while stepping, and the contract every engine, sweep and
+// stability study takes (they scale the model, never the parsed scene). Sizes in comments, N
+// particles. Optional force terms are absent unless the scene names them, and then cost nothing.
 struct Model {
+  SystemKind kind = SystemKind::Particles;  // the builder it came from (names fields in messages)
+  Eigen::Vector2d circle_start{1.0, 0.0};   // kind == Circle only: the start point; N = 0
+
   Vector mass;                  // (N) kg, > 0
   std::vector<char> pinned;     // (N) 1 = pinned: follows pin_motion from its start position
   Vector start_position;        // (3N) m
@@ -33,6 +43,19 @@ struct Model {
   std::optional<GridShape> grid;
 
   int particleCount() const { return static_cast<int>(mass.size()); }
+  bool isCircle() const { return kind == SystemKind::Circle; }
 };
+
+// The scene field a spring's parameter came from, for messages: "system.stiffness" (chain),
+// "system.shear.damping" (cloth), "system.springs[4].stiffness" (explicit particles).
+std::string springField(const Model& model, int spring, const std::string& parameter);
+
+// Where a pinned particle must be at time t (its start position moved by the pin motion), and
+// the velocity every pinned particle has then.
+Vec3 pinnedPosition(const Model& model, int particle, double t);
+Vec3 pinnedVelocity(const Model& model, double t);
+
+// Every spring's stiffness times `scale` (sweeps and stability studies scale the model).
+void scaleStiffness(Model& model, double scale);
 
 }  // namespace mysim

@@ -17,6 +17,9 @@ class OdeSystem {
 
   virtual int dimension() const = 0;
 
+  // The state a run starts from (pins and constraints already applied).
+  virtual State initialState() const = 0;
+
   // f(t, y) of the GIVEN state, never of a stored one: the trapezoidal rule and every RK stage
   // evaluate it at trial states.
   virtual void derivative(double t, const Vector& y, Vector& dydt) = 0;

@@ -30,7 +30,7 @@ class ParticleSystem final : public OdeSystem {
   double externalWork(const State& before, const State& after) const override;
   Eigen::Matrix<double, Eigen::Dynamic, 6> particleRows(const State& state) override;
 
-  State initialState() const;
+  State initialState() const override;
 
   // Total force on every particle (3N), pinned rows included (they are ignored by the caller).
   // `f` must have size 3N. Gathered per particle from the spring adjacency, in parallel (OpenMP)

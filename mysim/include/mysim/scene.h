@@ -1,5 +1,6 @@
 #pragma once
 #include <expected>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -13,9 +14,6 @@
 
 namespace mysim {
 
-enum class SystemKind { Circle, Chain, Cloth, Particles };
-const char* systemKindName(SystemKind kind);
-
 struct ExplicitParticle {
   Vec3 position = Vec3::Zero();
   Vec3 velocity = Vec3::Zero();
@@ -23,10 +21,23 @@ struct ExplicitParticle {
   bool pinned = false;
 };
 
-// Settings for the Bullet classic (position-based) engine; mysim ignores them.
-struct ClassicSettings {
-  int iterations = 10;  // positional solver passes per step (piterations)
+// Settings a scene may carry for an engine outside mysim, in a top-level section of the engine's
+// own ("bullet": {"classic_iterations": 10}). The engine declares the section; the scene reader
+// checks its numbers against the declaration (range, integer, unknown keys) like any other field
+// and keeps them, defaults filled in, for the engine. mysim never interprets them.
+struct EngineSetting {
+  std::string key;
+  double low = 0.0, high = 0.0;  // accepted range, inclusive
+  double fallback = 0.0;         // when the scene does not set it
+  bool integer = false;
+  std::string meaning;
 };
+struct EngineSection {
+  std::string name;
+  std::vector<EngineSetting> settings;
+};
+// section -> key -> value, for every declared section (defaults where the scene is silent).
+using EngineSettings = std::map<std::string, std::map<std::string, double>>;
 
 // A scene as the user described it, validated: the plain description every engine is built from.
 // No engine reads JSON. The schema is in docs/scenes.md.
@@ -55,14 +66,16 @@ struct Scene {
   double duration = 10.0;        // s
   double sample_interval = 0.0;  // s between trajectory frames; 0 = about 200 frames a run
   BlowUpLimits limits;
-  ClassicSettings classic;
+  EngineSettings engine_settings;
 };
 
-// The model of a chain, cloth or particles scene (the circle has none).
+// The model of a scene: every particle, spring and force term, expanded.
 Model buildModel(const Scene& scene);
 
-// The system to integrate, and its start state.
-std::unique_ptr<OdeSystem> makeSystem(const Scene& scene);
-State initialState(const Scene& scene, OdeSystem& system);
+// The system of a model: the circle's ODE or particles under the model's forces.
+std::unique_ptr<OdeSystem> makeSystem(const Model& model, const BlowUpLimits& limits);
+inline std::unique_ptr<OdeSystem> makeSystem(const Scene& scene) {
+  return makeSystem(buildModel(scene), scene.limits);
+}
 
 }  // namespace mysim

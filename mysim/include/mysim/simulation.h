@@ -7,6 +7,7 @@
 #include "mysim/blowup.h"
 #include "mysim/energy.h"
 #include "mysim/integrator.h"
+#include "mysim/stepper.h"
 
 namespace mysim {
 
@@ -37,9 +38,13 @@ struct RunSettings {
 // Frames are taken every this many steps.
 long sampleStride(const RunSettings& settings);
 
-// Steps the system from `state` for the duration, checking health after every step; stops at the
-// first unhealthy state and records it (the frames hold the states before it, never NaNs).
-RunRecord simulate(OdeSystem& system, Integrator& integrator, State state,
-                   const RunSettings& settings);
+// Number of scene steps of a run: duration / dt, rounded.
+long stepCount(const RunSettings& settings);
+
+// Steps from `state` for the duration with `stepper`, checking health on `system` after every
+// step (every engine is judged by the same system: its health checks, energy and output rows);
+// stops at the first unhealthy state and records it (the frames hold the states before it,
+// never NaNs).
+RunRecord simulate(OdeSystem& system, Stepper& stepper, State state, const RunSettings& settings);
 
 }  // namespace mysim

@@ -1,15 +1,15 @@
 #pragma once
-// Bullet 3.24 twins of mysim scenes, built from the same scene description and the same model
-// topology (node order, rest lengths, masses, pins). See docs/reference.md.
+// Bullet 3.24 twins of mysim models, built from the same model (node order, rest lengths, masses,
+// pins, force terms). See docs/reference.md.
 #include <expected>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "mysim/integrator.h"
-#include "mysim/particle_system.h"
+#include "mysim/model.h"
 #include "mysim/scene.h"
-#include "mysim/simulation.h"
+#include "mysim/stepper.h"
 
 class btSoftBody;
 
@@ -20,30 +20,58 @@ enum class BulletEngine {
   Implicit,    // the same world, linearised backward Euler + CG with projection
   Classic,     // btSoftRigidDynamicsWorld, position-based links
 };
+constexpr BulletEngine kBulletEngines[] = {BulletEngine::Deformable, BulletEngine::Implicit,
+                                           BulletEngine::Classic};
 
 // "bullet-deformable", "bullet-implicit", "bullet-classic".
-const std::vector<std::string>& bulletEngineNames();
-std::expected<BulletEngine, std::string> bulletEngineNamed(const std::string& name);
 const char* bulletEngineName(BulletEngine engine);
+// What the engine is, in a line (for `springcheck list`).
+const char* bulletEngineDescription(BulletEngine engine);
+// The scheme that steps it, for tables: "bullet-explicit", "bullet-backward-euler",
+// "bullet-pbd-N".
+std::string bulletIntegratorName(BulletEngine engine, int classic_iterations);
 
-// A Bullet world holding one soft body, stepped as an Integrator over a mysim ParticleSystem of
-// the same model: step() advances Bullet by exactly one stepSimulation(h, 0) and copies the node
-// state into the mysim state, so mysim's run loop, health checks and energy apply unchanged.
-class BulletStepper : public mysim::Integrator {
+// The scene section only Bullet engines read: "bullet": {"classic_iterations": N}.
+const mysim::EngineSection& bulletSceneSection();
+
+// How to run: the scene step (classic maps stiffness through it), the implicit solver's CG
+// settings (mysim's backward-euler settings, so both implicit solvers stop alike), and the
+// classic solver's passes per step.
+struct BulletSettings {
+  std::string source;  // the scene file, for messages
+  double dt = 0.01;
+  double cg_tolerance = 1e-8;
+  int cg_max_iterations = 1000;
+  int classic_iterations = 10;
+  // Deformable engines: use the per-link spring force even where Bullet's own mass-spring force
+  // holds every parameter (the test that checks one against the other sets it).
+  bool force_per_link_springs = false;
+};
+BulletSettings bulletSettings(const std::string& source, double dt,
+                              const mysim::IntegratorSettings& integrator,
+                              const mysim::EngineSettings& engine_settings);
+
+// A Bullet world holding one soft body, stepping a run: step() advances Bullet by exactly one
+// stepSimulation(h, 0) and copies the node state into the mysim state layout, so mysim's run
+// loop, health checks and energy apply unchanged.
+class BulletStepper : public mysim::Stepper {
  public:
-  bool needsParticles() const override { return true; }
   virtual const btSoftBody& body() const = 0;
-  // What this engine does differently from mysim for this scene (e.g. how drag is applied).
+  // What this engine does differently from mysim for this model (e.g. how drag is applied,
+  // whose force law the springs follow).
   virtual const std::vector<std::string>& notes() const = 0;
 };
 
-// Builds the engine for a scene, or says which field it cannot represent and why.
-[[nodiscard]] std::expected<std::unique_ptr<BulletStepper>, std::string> makeBulletStepper(
-    const mysim::Scene& scene, const mysim::Model& model, BulletEngine engine);
+// Refuses, naming the engine and the scene field, what an engine cannot represent (so no force
+// term is ever dropped silently); nothing else.
+[[nodiscard]] std::expected<void, std::string> checkSupported(const mysim::Model& model,
+                                                              BulletEngine engine,
+                                                              const BulletSettings& settings);
 
-// Runs a scene in a Bullet engine, recorded like a mysim run.
-[[nodiscard]] std::expected<mysim::RunRecord, std::string> runBullet(const mysim::Scene& scene,
-                                                                     BulletEngine engine);
+// Builds the engine for a model, or says which field it cannot represent and why. The circle
+// runs as its mechanical twin (mysim::circleTwin) and is reported in the circle's state layout.
+[[nodiscard]] std::expected<std::unique_ptr<BulletStepper>, std::string> makeBulletStepper(
+    const mysim::Model& model, BulletEngine engine, const BulletSettings& settings);
 
 // Classic link stiffness kLST in [0, 1] for a spring of stiffness k between particles of inverse
 // masses wa + wb = w at step h, with n solver iterations. A compliant constraint (XPBD, Macklin

@@ -6,17 +6,18 @@
 #include <string>
 #include <vector>
 
+#include "compare/engine_registry.h"
 #include "mysim/integrator.h"
 #include "mysim/scene.h"
 
 namespace viewer {
 
-// One engine running the current scene: mysim with an integrator, or a Bullet stepper (also an
-// mysim::Integrator), over an OdeSystem that holds the state and the energy.
+// One engine of the registry running the current scene: its stepper, over the OdeSystem that
+// judges every engine alike (health, energy, rows).
 struct EngineView {
   std::string engine;
   std::unique_ptr<mysim::OdeSystem> system;
-  std::unique_ptr<mysim::Integrator> integrator;
+  std::unique_ptr<mysim::Stepper> stepper;
   mysim::State state;
   std::string refused;                // why this engine cannot run the scene, if it cannot
   std::optional<double> blowup_time;  // s
@@ -34,8 +35,10 @@ struct Camera {
 class ViewerSession {
  public:
   // `scenes`: the files `t` cycles through; `first` is shown first (added if not in the list).
-  ViewerSession(std::vector<std::string> scenes, const std::string& first,
-                std::vector<std::string> engines, const std::string& integrator, double dt);
+  // `engines` are names in `registry`.
+  ViewerSession(springcheck::EngineRegistry registry, std::vector<std::string> scenes,
+                const std::string& first, std::vector<std::string> engines,
+                const std::string& integrator, double dt);
 
   // Keys as the original program had them, plus i, space and '.':
   //   t next scene, d wind on/off, s swing on/off, w shaded cloth / springs, r reset,
@@ -75,6 +78,7 @@ class ViewerSession {
   void build();
   void frameCamera();
 
+  springcheck::EngineRegistry registry_;
   std::vector<std::string> scenes_;
   std::size_t scene_index_ = 0;
   std::vector<std::string> engine_names_;

@@ -1,0 +1,137 @@
+#include "compare/engine_registry.h"
+
+#include "engines/engines.h"
+#include "mysim/scene_file.h"
+
+namespace springcheck {
+
+RunConfig runConfig(const mysim::Scene& scene) {
+  return {scene.source,
+          scene.name,
+          scene.integrator,
+          {scene.dt, scene.duration, scene.sample_interval},
+          scene.limits,
+          scene.engine_settings};
+}
+
+EngineRegistry::EngineRegistry() {
+  // The built-in rows. Adding an engine: its file in engines/ and a row here.
+  engines_.push_back(mysimEngine());
+  for (reference::BulletEngine e : reference::kBulletEngines) engines_.push_back(bulletEngine(e));
+  sections_.push_back(reference::bulletSceneSection());
+}
+
+std::expected<void, std::string> EngineRegistry::add(Engine engine) {
+  if (find(engine.name)) return std::unexpected("engine '" + engine.name + "' exists already");
+  engines_.push_back(std::move(engine));
+  return {};
+}
+
+std::expected<void, std::string> EngineRegistry::addEnginesFile(const std::string& path) {
+  auto specs = loadEnginesFile(path);
+  if (!specs) return std::unexpected(specs.error());
+  std::vector<Engine> added;
+  for (std::size_t k = 0; k < specs->size(); ++k) {
+    const ExternalEngineSpec& spec = (*specs)[k];
+    if (find(spec.name)) {
+      return std::unexpected(path + ": engines[" + std::to_string(k) + "].name: '" + spec.name +
+                             "' is taken by another engine; choose another name");
+    }
+    added.push_back(externalEngine(spec));
+  }
+  for (Engine& e : added) engines_.push_back(std::move(e));
+  engines_files_.push_back(path);
+  return {};
+}
+
+std::vector<std::string> EngineRegistry::names() const {
+  std::vector<std::string> names;
+  for (const Engine& e : engines_) names.push_back(e.name);
+  return names;
+}
+
+const Engine* EngineRegistry::find(const std::string& name) const {
+  for (const Engine& e : engines_) {
+    if (e.name == name) return &e;
+  }
+  return nullptr;
+}
+
+std::expected<mysim::Scene, std::string> EngineRegistry::loadScene(const std::string& path) const {
+  return mysim::loadScene(path, sections_);
+}
+
+std::string engineList(const EngineRegistry& registry) {
+  std::string list;
+  for (const Engine& e : registry.engines()) {
+    list += (list.empty() ? "" : ", ") + e.name;
+    if (e.takes_integrator) list += ", " + e.name + ":INTEGRATOR";
+  }
+  return list;
+}
+
+std::expected<std::pair<const Engine*, RunConfig>, EngineError> EngineRegistry::resolve(
+    const std::string& spec, const RunConfig& config) const {
+  auto unknown = [&](const std::string& why) {
+    return std::unexpected(EngineError{EngineError::Kind::Unknown, why});
+  };
+  const std::size_t colon = spec.find(':');
+  const Engine* engine = find(spec.substr(0, colon));
+  if (!engine) {
+    return unknown("unknown engine '" + spec + "'; expected one of " + engineList(*this) +
+                   (engines_files_.empty() ? " (a user's own engine comes from --engines-file)"
+                                           : ""));
+  }
+  RunConfig resolved = config;
+  if (colon != std::string::npos) {
+    if (!engine->takes_integrator) {
+      return unknown("engine '" + spec + "': " + engine->name + " takes no integrator");
+    }
+    auto name = mysim::canonicalIntegratorName(spec.substr(colon + 1));
+    if (!name) return unknown("engine '" + spec + "': " + name.error());
+    resolved.integrator.name = *name;
+  }
+  return std::pair{engine, std::move(resolved)};
+}
+
+std::expected<void, std::string> EngineRegistry::check(const std::string& spec) const {
+  auto resolved = resolve(spec, RunConfig{});
+  if (!resolved) return std::unexpected(resolved.error().message);
+  return {};
+}
+
+std::expected<EngineInstance, EngineError> EngineRegistry::build(const std::string& spec,
+                                                                 const mysim::Model& model,
+                                                                 const RunConfig& config) const {
+  auto resolved = resolve(spec, config);
+  if (!resolved) return std::unexpected(resolved.error());
+  return resolved->first->build(model, resolved->second);
+}
+
+std::expected<mysim::RunRecord, EngineError> EngineRegistry::run(const std::string& spec,
+                                                                 const mysim::Model& model,
+                                                                 const RunConfig& config) const {
+  auto resolved = resolve(spec, config);
+  if (!resolved) return std::unexpected(resolved.error());
+  const auto& [engine, resolved_config] = *resolved;
+  std::expected<mysim::RunRecord, EngineError> record;
+  if (engine->run) {
+    record = engine->run(model, resolved_config);
+  } else {
+    auto instance = engine->build(model, resolved_config);
+    if (!instance) return std::unexpected(instance.error());
+    record = mysim::simulate(*instance->system, *instance->stepper, instance->start,
+                             resolved_config.run);
+    record->integrator = instance->integrator;
+    record->notes = instance->notes;
+  }
+  if (record) record->engine = spec;
+  return record;
+}
+
+std::expected<mysim::RunRecord, EngineError> EngineRegistry::run(const std::string& spec,
+                                                                 const mysim::Scene& scene) const {
+  return run(spec, mysim::buildModel(scene), runConfig(scene));
+}
+
+}  // namespace springcheck

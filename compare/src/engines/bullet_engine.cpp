@@ -1,0 +1,29 @@
+// The Bullet twins (reference/): each steps a Bullet world built from the model.
+#include "engines.h"
+
+namespace springcheck {
+
+Engine bulletEngine(reference::BulletEngine which) {
+  Engine e;
+  e.name = reference::bulletEngineName(which);
+  e.kind = "bullet";
+  e.description = reference::bulletEngineDescription(which);
+  e.build = [which](const mysim::Model& model,
+                    const RunConfig& config) -> std::expected<EngineInstance, EngineError> {
+    const reference::BulletSettings settings = reference::bulletSettings(
+        config.source, config.run.dt, config.integrator, config.engine_settings);
+    auto stepper = reference::makeBulletStepper(model, which, settings);
+    if (!stepper) return std::unexpected(EngineError{EngineError::Kind::Refused, stepper.error()});
+    EngineInstance instance;
+    instance.notes = (*stepper)->notes();
+    instance.stepper = std::move(*stepper);
+    // mysim's system of the same model: start state, health checks, energy, output rows.
+    instance.system = mysim::makeSystem(model, config.limits);
+    instance.start = instance.system->initialState();
+    instance.integrator = reference::bulletIntegratorName(which, settings.classic_iterations);
+    return instance;
+  };
+  return e;
+}
+
+}  // namespace springcheck

@@ -111,8 +111,8 @@ TEST(ClosedForm, EllipticKKnownValues) {
 }
 
 TEST(ClosedForm, ExactCircleFramesHaveZeroErrorAndAShiftedOneItsShift) {
-  mysim::Scene scene;
-  scene.kind = mysim::SystemKind::Circle;
+  mysim::Model circle;
+  circle.kind = mysim::SystemKind::Circle;
   mysim::RunRecord run;
   for (double t : {0.0, 0.5, 1.0}) {
     mysim::ParticleRows row = mysim::ParticleRows::Zero(1, 6);
@@ -121,9 +121,9 @@ TEST(ClosedForm, ExactCircleFramesHaveZeroErrorAndAShiftedOneItsShift) {
     run.times.push_back(t);
     run.frames.push_back(row);
   }
-  EXPECT_LT(closedFormError(scene, run)->error, 1e-15);
+  EXPECT_LT(closedFormError(circle, run)->error, 1e-15);
   run.frames[2](0, 0) += 0.01;
-  EXPECT_NEAR(closedFormError(scene, run)->error, 0.01, 1e-15);
+  EXPECT_NEAR(closedFormError(circle, run)->error, 0.01, 1e-15);
 }
 
 TEST(SettlingMetric, TimeAfterWhichKineticEnergyStaysLowAndMaxStrain) {
@@ -178,36 +178,39 @@ TEST(Tolerances, MalformedFilesAreRefusedNamingTheCheckAndField) {
       {checkJson(kGoodCheck + R"(, "tolerance": 3)"), "checks[0].tolerance: unknown field"},
       {R"({"checks": []})", "checks: expected a non-empty list"},
   };
+  EngineRegistry registry;
   for (const Case& c : cases) {
-    auto parsed = parseTolerances(c.text, "tol.json", kRoot);
+    auto parsed = parseTolerances(c.text, "tol.json", kRoot, registry);
     ASSERT_FALSE(parsed) << c.text;
     EXPECT_EQ(parsed.error().rfind("tol.json: ", 0), 0u) << parsed.error();
     EXPECT_NE(parsed.error().find(c.expected), std::string::npos) << parsed.error();
   }
-  EXPECT_TRUE(parseTolerances(checkJson(kGoodCheck), "tol.json", kRoot));
+  EXPECT_TRUE(parseTolerances(checkJson(kGoodCheck), "tol.json", kRoot, registry));
 }
 
 TEST(Gate, FailsWhenABoundIsTightenedBelowTheMeasuredValue) {
-  auto tolerances = parseTolerances(checkJson(kGoodCheck), "tol.json", kRoot);
+  EngineRegistry registry;
+  auto tolerances = parseTolerances(checkJson(kGoodCheck), "tol.json", kRoot, registry);
   ASSERT_TRUE(tolerances) << tolerances.error();
-  const GateReport loose = runGate(*tolerances);
+  const GateReport loose = runGate(registry, *tolerances);
   ASSERT_TRUE(loose.results[0].measured);
   EXPECT_TRUE(loose.passed());
   const double measured = *loose.results[0].measured;
   EXPECT_GT(measured, 0.0);
   tolerances->checks[0].bound = 0.5 * measured;
-  const GateReport tight = runGate(*tolerances);
+  const GateReport tight = runGate(registry, *tolerances);
   EXPECT_FALSE(tight.passed());
   EXPECT_DOUBLE_EQ(*tight.results[0].measured, measured);  // same input, same output
 }
 
 TEST(Gate, AnEngineThatRefusesTheSceneFailsItsCheck) {
+  EngineRegistry registry;
   auto tolerances =
       parseTolerances(checkJson(R"("scene": "scenes/seed/cloth.json", "engines": ["bullet-classic"],
                    "metric": "sag_lowest", "bound": 10, "why": "w")"),
-                      "tol.json", kRoot);
+                      "tol.json", kRoot, registry);
   ASSERT_TRUE(tolerances) << tolerances.error();
-  const GateReport report = runGate(*tolerances);
+  const GateReport report = runGate(registry, *tolerances);
   EXPECT_FALSE(report.passed());
   EXPECT_NE(report.results[0].problem.find("refused"), std::string::npos);
 }

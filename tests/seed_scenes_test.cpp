@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "mysim/scene_file.h"
+#include "test_support.h"
 #include "mysim/simulation.h"
 
 namespace mysim {
@@ -29,10 +30,8 @@ TEST_P(SeedScene, RunsWithoutBlowUpAndWithoutEnergyGain) {
   scene->integrator.name = c.integrator;
   scene->dt = c.dt;
   scene->duration = c.duration;
-  auto system = makeSystem(*scene);
-  auto method = std::move(makeIntegrator(scene->integrator).value());
-  const RunRecord r =
-      simulate(*system, *method, initialState(*scene, *system), {scene->dt, scene->duration, 0.0});
+  scene->sample_interval = 0.0;
+  const RunRecord r = testing::simulateScene(*scene);
   ASSERT_FALSE(r.blowup) << r.blowup->check << " at t = " << r.blowup->time;
   EXPECT_NEAR(r.times.back(), c.duration, 1e-9);
   if (r.energies.empty()) {  // the circle: radius within 2 % of 1

@@ -17,12 +17,7 @@ Scene sceneFile(const std::string& name) {
   return *scene;
 }
 
-RunRecord runScene(const Scene& scene) {
-  auto system = makeSystem(scene);
-  auto method = std::move(makeIntegrator(scene.integrator).value());
-  return simulate(*system, *method, initialState(scene, *system),
-                  {scene.dt, scene.duration, scene.sample_interval});
-}
+RunRecord runScene(const Scene& scene) { return testing::simulateScene(scene); }
 
 // FNV-1a over the bytes of every sampled frame.
 std::uint64_t hashFrames(const RunRecord& r) {

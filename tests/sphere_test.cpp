@@ -35,7 +35,7 @@ TEST_P(ClothOnSphere, NeverEntersTheSphereAndComesToRestWithoutJitter) {
   scene->integrator.name = GetParam();
   auto system = makeSystem(*scene);
   auto method = std::move(makeIntegrator(scene->integrator).value());
-  State s = initialState(*scene, *system);
+  State s = system->initialState();
   const int n = system->particles()->particleCount();
   const Sphere sphere = *scene->sphere;
   double settled_speed = 0.0, settled_jump = 0.0;

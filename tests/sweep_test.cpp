@@ -26,14 +26,14 @@ class SmallSweep : public ::testing::Test {
         << R"({"name": "small", "scenes": [")" SPRINGCHECK_SOURCE_DIR
            R"(/scenes/seed/circle.json"], "integrators": ["euler", "rk4"], "dt": [0.1, 0.05, 0.025],
         "duration": 3.0, "sample_interval": 0.1, "reference": "closed_form"})";
-    auto spec = loadSweepSpec((dir_ / "spec.json").string());
+    auto spec = loadSweepSpec((dir_ / "spec.json").string(), registry_);
     ASSERT_TRUE(spec) << spec.error();
     spec_ = *spec;
   }
   void TearDown() override { fs::remove_all(dir_); }
 
   std::vector<SweepRow> run(const std::string& name, SweepOptions options, int expected_runs) {
-    auto ran = runSweep(spec_, (dir_ / name).string(), options);
+    auto ran = runSweep(registry_, spec_, (dir_ / name).string(), options);
     EXPECT_TRUE(ran) << ran.error();
     EXPECT_EQ(*ran, expected_runs);
     auto rows = readSweepTable((dir_ / name).string());
@@ -49,6 +49,7 @@ class SmallSweep : public ::testing::Test {
   }
 
   fs::path dir_;
+  EngineRegistry registry_;
   SweepSpec spec_;
 };
 
@@ -103,13 +104,13 @@ TEST_F(SmallSweep, ShardsMergeToTheWhole) {
 TEST_F(SmallSweep, MalformedSpecsNameTheField) {
   std::ofstream(dir_ / "bad.json")
       << R"({"scenes": ["nope.json"], "dt": [0.1], "reference": "closed_form"})";
-  auto bad = loadSweepSpec((dir_ / "bad.json").string());
+  auto bad = loadSweepSpec((dir_ / "bad.json").string(), registry_);
   ASSERT_FALSE(bad);
   EXPECT_NE(bad.error().find("scenes[0]"), std::string::npos) << bad.error();
   std::ofstream(dir_ / "bad2.json")
       << R"({"scenes": [")" SPRINGCHECK_SOURCE_DIR
          R"(/scenes/seed/circle.json"], "dt": [0.1, 0.03], "sample_interval": 0.1, "reference": "closed_form"})";
-  auto bad2 = loadSweepSpec((dir_ / "bad2.json").string());
+  auto bad2 = loadSweepSpec((dir_ / "bad2.json").string(), registry_);
   ASSERT_FALSE(bad2);
   EXPECT_NE(bad2.error().find("sample_interval"), std::string::npos) << bad2.error();
 }
@@ -129,7 +130,7 @@ class StabilityLimitAgreesWithTheory : public ::testing::TestWithParam<TheoryCas
 
 TEST_P(StabilityLimitAgreesWithTheory, OnTheOscillatorAtTwoStiffnesses) {
   for (double k : {10.0, 1e4}) {
-    const StabilityLimit l = oscillatorStability(GetParam().integrator, k, 0.01, 0.05, {});
+    const StabilityLimit l = oscillatorStability(EngineRegistry(), GetParam().integrator, k, 0.01, 0.05, {});
     ASSERT_EQ(l.status, "bracketed");
     const double ratio = l.h_stable / *l.theory;
     EXPECT_GE(ratio, GetParam().low) << k;
@@ -153,7 +154,7 @@ TEST(StabilityLimit, BackwardEulerIsStableAtTheLargestStepTried) {
   // floor on its threshold once produced NaN (conjugate_gradient.cpp).
   for (auto [k, m, zeta] :
        {std::tuple{1e3, 0.01, 0.0}, {10.0, 1.0, 0.05}, {100.0, 0.01, 0.05}, {100.0, 1.0, 0.05}}) {
-    const StabilityLimit l = oscillatorStability("backward-euler", k, m, zeta, {});
+    const StabilityLimit l = oscillatorStability(EngineRegistry(), "backward-euler", k, m, zeta, {});
     EXPECT_EQ(l.status, "stable-at-max") << k << " " << m;  // h w = 100
   }
 }

@@ -6,6 +6,8 @@
 
 #include "mysim/integrator.h"
 #include "mysim/particle_system.h"
+#include "mysim/scene.h"
+#include "mysim/simulation.h"
 
 namespace mysim::testing {
 
@@ -67,6 +69,14 @@ inline const std::vector<std::string>& particleIntegrators() {
   static const std::vector<std::string> names = {
       "euler", "trapezoidal", "rk4", "symplectic-euler", "verlet", "backward-euler", "dopri5"};
   return names;
+}
+
+// Runs a scene in mysim with its own integrator, step and duration.
+inline RunRecord simulateScene(const Scene& scene) {
+  auto system = makeSystem(scene);
+  IntegratorStepper stepper(*system, std::move(makeIntegrator(scene.integrator).value()));
+  return simulate(*system, stepper, system->initialState(),
+                  {scene.dt, scene.duration, scene.sample_interval});
 }
 
 // GoogleTest parameter names must be identifiers: "backward-euler" -> "backwardeuler".

@@ -1,6 +1,7 @@
 #include "compare/gate.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <cstdio>
 #include <map>
 #include <set>
@@ -70,7 +71,23 @@ CheckResult evaluate(const ToleranceCheck& check, const Comparison& c) {
 
 }  // namespace
 
-GateReport runGate(const EngineRegistry& registry, const Tolerances& tolerances) {
+namespace {
+
+// Whether a comparison holds (a run, a refusal or a failure of) every engine in `engines`.
+bool covers(const Comparison& c, const std::vector<std::string>& engines) {
+  for (const std::string& e : engines) {
+    auto named = [&](const auto& list) {
+      return std::any_of(list.begin(), list.end(), [&](const auto& x) { return x.engine == e; });
+    };
+    if (!named(c.runs) && !named(c.refused) && !named(c.failed)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+GateReport runGate(const EngineRegistry& registry, const Tolerances& tolerances,
+                   const ComparisonCache& done) {
   // Engines per scene, in order of first mention, so every run happens once.
   std::map<std::string, std::vector<std::string>> engines;
   std::vector<std::string> scenes;
@@ -84,6 +101,12 @@ GateReport runGate(const EngineRegistry& registry, const Tolerances& tolerances)
   GateReport report;
   std::map<std::string, Comparison> comparisons;
   for (const std::string& path : scenes) {
+    std::error_code ec;
+    const auto cached = done.find(std::filesystem::weakly_canonical(path, ec).string());
+    if (cached != done.end() && covers(cached->second, engines[path])) {
+      comparisons.emplace(path, cached->second);
+      continue;
+    }
     auto scene = registry.loadScene(path);  // validated when the tolerances were read
     auto comparison = compareScene(registry, *scene, engines[path]);
     comparisons.emplace(path, std::move(*comparison));

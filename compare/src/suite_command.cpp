@@ -1,8 +1,10 @@
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
 #include "commands.h"
 #include "compare/comparison.h"
+#include "compare/gate.h"
 #include "compare/scene_files.h"
 
 namespace springcheck {
@@ -12,6 +14,7 @@ struct SuiteOptions {
   std::string dir = "scenes";
   std::string out = "out/suite";
   std::vector<std::string> engines_files;
+  std::string tolerances;  // also gate the runs against this file
 };
 
 // Every scene under a directory in every engine that takes it (every engine of the registry,
@@ -19,14 +22,24 @@ struct SuiteOptions {
 // the comparison table of each. A scene file that does not load, a run that blows up or an
 // external engine that fails makes the suite fail; the other scenes still run.
 int runSuite(const SuiteOptions& o) {
-  const std::optional<EngineRegistry> registry = makeRegistry(o.engines_files);
+  std::optional<EngineRegistry> registry = makeRegistry(o.engines_files);
   if (!registry) return kBadInput;
   auto files = sceneFiles(o.dir);
   if (!files) {
     std::cerr << "error: " << files.error() << '\n';
     return kBadInput;
   }
+  std::optional<Tolerances> tolerances;
+  if (!o.tolerances.empty()) {
+    auto loaded = loadTolerances(o.tolerances, *registry);
+    if (!loaded) {
+      std::cerr << "error: --tolerances: " << loaded.error() << '\n';
+      return kBadInput;
+    }
+    tolerances = std::move(*loaded);
+  }
   int code = kOk;
+  ComparisonCache done;
   for (const std::string& file : *files) {
     auto scene = registry->loadScene(file);
     if (!scene) {
@@ -46,6 +59,13 @@ int runSuite(const SuiteOptions& o) {
       if (m.blew_up && code == kOk) code = kBlowUp;
     }
     std::cout << '\n';
+    std::error_code ec;
+    if (tolerances) done.emplace(std::filesystem::weakly_canonical(file, ec).string(), *comparison);
+  }
+  if (tolerances) {
+    const GateReport report = runGate(*registry, *tolerances, done);
+    printGate(std::cout, report);
+    if (!report.passed() && code == kOk) code = kFailure;
   }
   std::cout << "results in " << o.out << "/<scene>/\n";
   return code;
@@ -60,6 +80,9 @@ void addSuiteCommand(CLI::App& app, int& exit_code) {
   suite->add_option("dir", options->dir, "Scene directory")->capture_default_str();
   suite->add_option("--out", options->out, "Output root")->capture_default_str();
   addEnginesFileOption(suite, options->engines_files);
+  suite->add_option("--tolerances", options->tolerances,
+                    "Then check these bounds against the runs (a tolerances file, which may "
+                    "name its own engines_file); the exit code says whether they held");
   suite->callback([options, &exit_code] { exit_code = runSuite(*options); });
 }
 

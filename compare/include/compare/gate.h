@@ -1,9 +1,11 @@
 #pragma once
+#include <map>
 #include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
 
+#include "compare/comparison.h"
 #include "compare/tolerances.h"
 
 namespace springcheck {
@@ -20,8 +22,13 @@ struct GateReport {
   bool passed() const;
 };
 
-// Runs each scene once in every engine its checks name, then checks every bound.
-GateReport runGate(const EngineRegistry& registry, const Tolerances& tolerances);
+// Comparisons already run, by scene file (as std::filesystem::weakly_canonical names it).
+using ComparisonCache = std::map<std::string, Comparison>;
+
+// Runs each scene once in every engine its checks name, then checks every bound. A scene in
+// `done` that ran every engine its checks need is not run again.
+GateReport runGate(const EngineRegistry& registry, const Tolerances& tolerances,
+                   const ComparisonCache& done = {});
 void printGate(std::ostream& out, const GateReport& report);
 
 }  // namespace springcheck

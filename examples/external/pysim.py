@@ -1,0 +1,134 @@
+#!/usr/bin/env python3
+"""A mass-spring simulator in Python with numpy, run by springcheck as an external engine.
+
+    pysim.py MODEL_JSON OUT_DIR
+
+Reads the model file springcheck writes (docs/external-engines.md), steps it with symplectic
+Euler -- v += h a(t, x, v); x += h v -- and writes what springcheck reads back:
+
+    OUT_DIR/times.npy       float64 (frames,): the frame times the model asks for
+    OUT_DIR/trajectory.npy  float64 (frames, particles, 6): x y z vx vy vz per frame
+    OUT_DIR/summary.json    its own stepping time, evaluations, and a blow-up if one happened
+
+It does what springcheck's own symplectic Euler does, in the same order, so the two agree to
+round-off: forces of gravity, drag, wind and damped springs; pinned particles put on their
+prescribed path after the step; particles found inside the sphere moved to its surface and
+stripped of their inward velocity. Copy it as the start of your own engine.
+"""
+import json
+import math
+import os
+import sys
+import time
+
+import numpy as np
+
+
+def main(model_path, out_dir):
+    with open(model_path) as f:
+        model = json.load(f)
+    particles = model["particles"]
+    x = np.array(particles["position"], dtype=float).reshape(-1, 3)
+    v = np.array(particles["velocity"], dtype=float).reshape(-1, 3)
+    mass = np.array(particles["mass"], dtype=float)
+    pinned = np.array(particles["pinned"], dtype=bool)
+    free = ~pinned
+    start = x.copy()
+    n = len(mass)
+
+    springs = model["springs"]
+    i = np.array(springs["i"], dtype=int)
+    j = np.array(springs["j"], dtype=int)
+    rest = np.array(springs["rest_length"], dtype=float)
+    k = np.array(springs["stiffness"], dtype=float)
+    c = np.array(springs["damping"], dtype=float)
+    damped = bool(np.any(c != 0.0))
+
+    gravity = np.array(model["gravity"], dtype=float)
+    drag = float(model["drag"])
+    wind = model["wind"]
+    if wind is not None:
+        # Force on particle p in gust window floor(t / gust_period): table[window, p] * direction.
+        wind_table = np.load(os.path.join(os.path.dirname(model_path), wind["force_table"]))
+        wind_direction = np.array(wind["direction"], dtype=float)
+    pins = model["pin_motion"]
+    sphere = model["sphere"]
+
+    def pin_offset(t):
+        w = 2.0 * math.pi * pins["frequency"]
+        axis = np.array(pins["axis"], dtype=float)
+        return (pins["amplitude"] * math.sin(w * t) * axis,
+                pins["amplitude"] * w * math.cos(w * t) * axis)
+
+    def acceleration(t, x, v):
+        f = mass[:, None] * gravity - drag * v
+        if wind is not None:
+            window = int(math.floor(t / wind["gust_period"]))
+            f += wind_table[window][:, None] * wind_direction
+        d = x[j] - x[i]
+        length = np.sqrt(np.einsum("ij,ij->i", d, d))
+        # F on i = [k (1 - rest / l) + c (d . w) / l^2] d, w = v_j - v_i; j feels the opposite.
+        scale = k * (1.0 - rest / length)
+        if damped:
+            w = v[j] - v[i]
+            scale = scale + c * np.einsum("ij,ij->i", d, w) / (length * length)
+        spring = scale[:, None] * d
+        np.add.at(f, i, spring)
+        np.add.at(f, j, -spring)
+        return f / mass[:, None]
+
+    dt = float(model["dt"])
+    steps = int(model["steps"])
+    frame_steps = model["frame_steps"]
+    times, frames = [], []
+    wanted = 0
+
+    def record(t):
+        nonlocal wanted
+        times.append(t)
+        frames.append(np.hstack([x, v]))
+        wanted += 1
+
+    record(0.0)
+    blowup = None
+    t = 0.0
+    began = time.perf_counter()
+    for step in range(1, steps + 1):
+        a = acceleration(t, x, v)
+        v[free] += dt * a[free]
+        x[free] += dt * v[free]
+        t += dt  # summed as springcheck sums it, so frame times match exactly
+        offset, velocity = pin_offset(t) if pins is not None else (0.0, 0.0)
+        x[pinned] = start[pinned] + offset
+        v[pinned] = velocity
+        if sphere is not None:
+            centre = np.array(sphere["center"], dtype=float)
+            surface = sphere["radius"] + sphere["margin"]
+            d = x - centre
+            r = np.sqrt(np.einsum("ij,ij->i", d, d))
+            inside = free & (r < surface)
+            if np.any(inside):
+                normal = np.where(r[inside, None] > 0, d[inside] / np.maximum(r[inside, None], 1e-300),
+                                  np.array([0.0, 1.0, 0.0]))
+                x[inside] = centre + surface * normal
+                vn = np.einsum("ij,ij->i", v[inside], normal)
+                v[inside] -= np.minimum(vn, 0.0)[:, None] * normal
+        if not (np.all(np.isfinite(x)) and np.all(np.isfinite(v))):
+            blowup = {"time": t, "reason": "a position or velocity became non-finite"}
+            break
+        if wanted < len(frame_steps) and frame_steps[wanted] == step:
+            record(t)
+    elapsed = time.perf_counter() - began
+
+    os.makedirs(out_dir, exist_ok=True)
+    np.save(os.path.join(out_dir, "times.npy"), np.array(times))
+    np.save(os.path.join(out_dir, "trajectory.npy"), np.array(frames).reshape(len(frames), n, 6))
+    with open(os.path.join(out_dir, "summary.json"), "w") as f:
+        json.dump({"wall_seconds": elapsed, "derivative_evaluations": step if steps else 0,
+                   "blowup": blowup}, f)
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3:
+        sys.exit("usage: pysim.py MODEL_JSON OUT_DIR")
+    main(sys.argv[1], sys.argv[2])

@@ -1,0 +1,192 @@
+// External engines: the example Python engine against closed forms and mysim, the model file,
+// and every way an engine can misbehave, each refused with a message naming engine and file.
+#include "compare/external_engine.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "compare/closed_form.h"
+#include "compare/drape_metric.h"
+#include "compare/npy.h"
+#include "mysim/wind.h"
+
+namespace springcheck {
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kRoot = SPRINGCHECK_SOURCE_DIR;
+
+EngineRegistry registryWith(const std::string& engines_file) {
+  EngineRegistry registry;
+  auto added = registry.addEnginesFile(kRoot + "/" + engines_file);
+  EXPECT_TRUE(added) << added.error();
+  return registry;
+}
+
+mysim::Scene scene(const EngineRegistry& registry, const std::string& name) {
+  auto s = registry.loadScene(kRoot + "/scenes/" + name);
+  EXPECT_TRUE(s) << s.error();
+  return *s;
+}
+
+TEST(ExamplePythonEngine, ReproducesTheVerticalChainClosedFormSag) {
+  const EngineRegistry registry = registryWith("examples/external/engines.json");
+  const mysim::Scene chain = scene(registry, "matched/chain_hanging.json");
+  auto run = registry.run("pysim", chain);
+  ASSERT_TRUE(run) << run.error().message;
+  ASSERT_FALSE(run->blowup);
+  const auto error = closedFormError(mysim::buildModel(chain), *run);
+  ASSERT_TRUE(error);
+  // The same allowance as mysim's (compare/tolerances.json): after 20 s of drag at 1 /s the
+  // slowest mode keeps e^-10 of the 0.35 m start displacement, 1.6e-5 m.
+  EXPECT_LT(error->error, 1e-4);
+}
+
+// Symplectic Euler in numpy against mysim's own: the same algorithm, summed in another order, so
+// they differ by round-off only. On the damped hanging cloth over 2 s (1000 steps).
+TEST(ExamplePythonEngine, MatchesMysimSymplecticEulerToRoundOff) {
+  const EngineRegistry registry = registryWith("examples/external/engines.json");
+  mysim::Scene cloth = scene(registry, "matched/cloth_hanging.json");
+  cloth.duration = 2.0;
+  auto external = registry.run("pysim", cloth);
+  auto own = registry.run("mysim:symplectic-euler", cloth);
+  ASSERT_TRUE(external) << external.error().message;
+  ASSERT_TRUE(own) << own.error().message;
+  ASSERT_EQ(external->frames.size(), own->frames.size());
+  double worst = 0.0;
+  for (std::size_t f = 0; f < own->frames.size(); ++f) {
+    EXPECT_DOUBLE_EQ(external->times[f], own->times[f]);
+    worst = std::max(worst, nodeDistance(external->frames[f].leftCols<3>(),
+                                         own->frames[f].leftCols<3>())
+                                .max);
+  }
+  // A 1 m cloth: a few ulps (1e-16 m) a step over 1000 steps, far below 1e-9 m; a different
+  // force law or step order is off by millimetres.
+  EXPECT_LT(worst, 1e-9);
+  EXPECT_EQ(external->engine, "pysim");
+  EXPECT_EQ(external->counts.derivative_evaluations, 1000);  // from its summary.json
+}
+
+TEST(ModelFile, HoldsEveryParticleSpringFrameTimeAndTheWindTable) {
+  const EngineRegistry registry;
+  const mysim::Scene windy = scene(registry, "matched/cloth_in_wind.json");
+  const mysim::Model model = mysim::buildModel(windy);
+  const RunConfig config = runConfig(windy);
+  const FramePlan plan = framePlan(config.run, false);
+  const fs::path dir = fs::temp_directory_path() / ("springcheck_model_" + std::to_string(getpid()));
+  ASSERT_TRUE(writeModelFile(dir.string(), model, config, plan));
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(dir / "model.json"));
+  EXPECT_EQ(j["particles"]["count"], model.particleCount());
+  EXPECT_EQ(j["springs"]["count"], model.springs.size());
+  EXPECT_EQ(j["springs"]["stiffness"][5].get<double>(), model.springs[5].stiffness);
+  EXPECT_EQ(j["frame_times"].size(), plan.times.size());
+  EXPECT_EQ(j["frame_steps"].back().get<long>(), mysim::stepCount(config.run));
+  auto table = readNpy((dir / "wind.npy").string());
+  ASSERT_TRUE(table) << table.error();
+  ASSERT_EQ(table->shape.size(), 2u);
+  EXPECT_EQ(table->shape[1], model.particleCount());
+  // Window 3, particle 20: the table holds the force mysim applies anywhere in that window.
+  const mysim::Wind& w = *model.wind;
+  const double t = 3.7 * w.gust_period;
+  EXPECT_DOUBLE_EQ(table->data[3 * model.particleCount() + 20],
+                   mysim::windForce(w, 20, t).dot(w.direction));
+  fs::remove_all(dir);
+}
+
+TEST(Npy, ReadsWhatItWritesAndRefusesOtherTypes) {
+  const fs::path path = fs::temp_directory_path() / ("springcheck_npy_" + std::to_string(getpid()));
+  ASSERT_TRUE(writeNpy(path.string(), {2, 3}, {1, 2, 3, 4, 5, 6}));
+  auto a = readNpy(path.string());
+  ASSERT_TRUE(a) << a.error();
+  EXPECT_EQ(a->shape, (std::vector<long>{2, 3}));
+  EXPECT_EQ(a->data[5], 6.0);
+  const std::string header = "{'descr': '<i8', 'fortran_order': False, 'shape': (1,), }";
+  std::string bytes = std::string("\x93NUMPY\x01\x00", 8);
+  bytes += static_cast<char>(header.size());
+  bytes += '\0';
+  std::ofstream(path, std::ios::binary) << bytes << header << std::string(8, '\0');
+  auto bad = readNpy(path.string());
+  ASSERT_FALSE(bad);
+  EXPECT_NE(bad.error().find("float64"), std::string::npos) << bad.error();
+  fs::remove(path);
+}
+
+struct Misbehaviour {
+  std::string mode;      // the engine's name in tests/data/misbehaving_engines.json
+  std::string expected;  // what the message must say
+};
+
+class MisbehavingEngine : public ::testing::TestWithParam<Misbehaviour> {};
+
+TEST_P(MisbehavingEngine, IsRefusedWithAMessageNamingEngineAndFile) {
+  const EngineRegistry registry = registryWith("tests/data/misbehaving_engines.json");
+  mysim::Scene chain = scene(registry, "matched/chain_hanging.json");
+  chain.duration = 0.2;
+  auto run = registry.run(GetParam().mode, chain);
+  ASSERT_FALSE(run) << GetParam().mode << " was accepted";
+  EXPECT_EQ(run.error().kind, EngineError::Kind::Failed);
+  EXPECT_NE(run.error().message.find("engine '" + GetParam().mode + "'"), std::string::npos)
+      << run.error().message;
+  EXPECT_NE(run.error().message.find(GetParam().expected), std::string::npos)
+      << run.error().message;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    EveryWay, MisbehavingEngine,
+    ::testing::Values(Misbehaviour{"exit-code", "exited with code 3"},
+                      Misbehaviour{"timeout", "killed at its time limit of 3 s"},
+                      Misbehaviour{"wrong-shape", "trajectory.npy: expected shape"},
+                      Misbehaviour{"particle-count", "trajectory.npy: 8 particles, the model has 9"},
+                      Misbehaviour{"nan", "trajectory.npy: non-finite value in frame"},
+                      Misbehaviour{"short", "declares no blow-up: the run is incomplete"},
+                      Misbehaviour{"wrong-times", "times.npy: frame 1 at t"},
+                      Misbehaviour{"missing-file", "trajectory.npy: missing"}),
+    [](const auto& info) {
+      std::string name = info.param.mode;
+      std::erase(name, '-');
+      return name;
+    });
+
+TEST(MisbehavingEngine, ADeclaredBlowUpIsAcceptedAsABlowUpAtItsTime) {
+  const EngineRegistry registry = registryWith("tests/data/misbehaving_engines.json");
+  mysim::Scene chain = scene(registry, "matched/chain_hanging.json");
+  chain.duration = 0.2;
+  auto run = registry.run("blowup", chain);
+  ASSERT_TRUE(run) << run.error().message;
+  ASSERT_TRUE(run->blowup);
+  EXPECT_EQ(run->blowup->check, "engine");
+  EXPECT_NE(run->blowup->detail.find("the test engine gave up"), std::string::npos);
+  EXPECT_GT(run->blowup->time, 0.09);
+  EXPECT_LT(run->blowup->time, 0.12);
+}
+
+TEST(EnginesFile, MalformedEntriesAreRefusedNamingTheField) {
+  const fs::path path = fs::temp_directory_path() / ("springcheck_engines_" + std::to_string(getpid()) + ".json");
+  struct Case {
+    std::string text, expected;
+  };
+  for (const Case& c : std::vector<Case>{
+           {R"({"engines": [{"name": "Bad Name", "command": ["x"]}]})", "engines[0].name"},
+           {R"({"engines": [{"name": "a", "command": []}]})", "engines[0].command"},
+           {R"({"engines": [{"name": "a", "command": ["x", "{modle}"]}]})",
+            "engines[0].command[1]: unknown placeholder {modle}"},
+           {R"({"engines": [{"name": "a", "command": ["x"], "time_limit": -1}]})",
+            "engines[0].time_limit"},
+           {R"({"engines": [{"name": "a", "command": ["x"], "speed": 2}]})", "engines[0].speed"},
+           {R"({"engines": [{"name": "mysim", "command": ["x"]}]})", "is taken"},
+       }) {
+    std::ofstream(path) << c.text;
+    EngineRegistry registry;
+    auto added = registry.addEnginesFile(path.string());
+    ASSERT_FALSE(added) << c.text;
+    EXPECT_NE(added.error().find(path.string()), std::string::npos) << added.error();
+    EXPECT_NE(added.error().find(c.expected), std::string::npos) << added.error();
+  }
+  fs::remove(path);
+}
+
+}  // namespace
+}  // namespace springcheck

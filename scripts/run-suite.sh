@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The main job: set up, build, run the default comparison suite and write the report.
-#   out/suite/      every scene in every engine that takes it (comparison tables, runs)
+#   out/suite/      every scene in every engine that takes it, the example external engine
+#                   (examples/external/) included (comparison tables, runs)
 #   out/gate.json   the tolerance gates
 #   out/energy/     energy drift of every integrator and engine, undamped and damped
 #   out/sweep/      speed/accuracy and convergence sweeps
@@ -13,7 +14,9 @@ B=build/release/compare/springcheck
 OUT=${SPRINGCHECK_OUT:-out}
 start=$(date +%s)
 
-$B suite scenes --out "$OUT/suite"
+# Every engine of the registry, the example external engine (examples/external/) included.
+E=examples/external/engines.json
+$B suite scenes --out "$OUT/suite" --engines-file "$E"
 gate_status=0
 $B gate --json "$OUT/gate.json" || gate_status=$?
 
@@ -22,7 +25,8 @@ $B gate --json "$OUT/gate.json" || gate_status=$?
 integrators=mysim:euler,mysim:trapezoidal,mysim:rk4,mysim:symplectic-euler,mysim:verlet,mysim:backward-euler,mysim:dopri5
 for scene in chain_swing chain_hanging; do
   $B compare "scenes/matched/$scene.json" --out "$OUT/energy/$scene" \
-    --engines "$integrators,bullet-deformable,bullet-implicit,bullet-classic" >/dev/null || [ $? -eq 3 ]
+    --engines "$integrators,bullet-deformable,bullet-implicit,bullet-classic,pysim" \
+    --engines-file "$E" >/dev/null || [ $? -eq 3 ]
 done
 
 for spec in compare/sweeps/*.json; do

@@ -1,16 +1,25 @@
-# Runs `springcheck run SCENE --out OUT` and checks it is refused: exit code 2, a message that
-# names the scene file, and no output directory.
+# Runs `springcheck run SCENE --out OUT` and checks it is refused with no output directory
+# (nothing half-written). A bad scene: exit code 2 and a message naming the scene file. With
+# ENGINE and ENGINES_FILE, an external engine that misbehaves: exit code 4 and a message naming
+# the engine.
 file(REMOVE_RECURSE "${OUT}")
-execute_process(COMMAND "${EXE}" run "${SCENE}" --out "${OUT}"
-                RESULT_VARIABLE code ERROR_VARIABLE err OUTPUT_VARIABLE out)
-if(NOT code EQUAL 2)
-  message(FATAL_ERROR "expected exit code 2, got ${code}: ${err}")
+set(args run "${SCENE}" --out "${OUT}")
+set(expected_code 2)
+set(expected_name "${SCENE}")
+if(DEFINED ENGINE)
+  list(APPEND args --duration 0.2 --engine "${ENGINE}" --engines-file "${ENGINES_FILE}")
+  set(expected_code 4)
+  set(expected_name "engine '${ENGINE}'")
 endif()
-string(FIND "${err}" "${SCENE}" named)
+execute_process(COMMAND "${EXE}" ${args} RESULT_VARIABLE code ERROR_VARIABLE err OUTPUT_VARIABLE out)
+if(NOT code EQUAL expected_code)
+  message(FATAL_ERROR "expected exit code ${expected_code}, got ${code}: ${err}")
+endif()
+string(FIND "${err}" "${expected_name}" named)
 if(named EQUAL -1)
-  message(FATAL_ERROR "message does not name the file: ${err}")
+  message(FATAL_ERROR "message does not name ${expected_name}: ${err}")
 endif()
 if(EXISTS "${OUT}")
-  message(FATAL_ERROR "output written for a refused scene: ${OUT}")
+  message(FATAL_ERROR "output written for a refused run: ${OUT}")
 endif()
 message(STATUS "refused as expected: ${err}")

@@ -16,6 +16,7 @@
 #include "compare/drape_metric.h"
 #include "compare/energy_metric.h"
 #include "compare/settling_metric.h"
+#include "mysim/json_input.h"
 
 namespace springcheck {
 namespace {
@@ -30,142 +31,89 @@ std::string number(double v) {
   return out.str();
 }
 
-std::expected<std::vector<double>, std::string> positiveList(const json& j,
-                                                             const std::string& field) {
-  if (!j.is_array() || j.empty())
-    return std::unexpected(field + ": expected a non-empty list of numbers > 0");
-  std::vector<double> values;
-  for (const json& v : j) {
-    if (!v.is_number() || !(v.get<double>() > 0) || !std::isfinite(v.get<double>())) {
-      return std::unexpected(field + ": expected numbers > 0, got " + v.dump());
-    }
-    values.push_back(v.get<double>());
-  }
-  return values;
-}
-
-std::expected<std::vector<std::string>, std::string> stringList(const json& j,
-                                                                const std::string& field) {
-  if (!j.is_array() || j.empty())
-    return std::unexpected(field + ": expected a non-empty list of names");
-  std::vector<std::string> values;
-  for (const json& v : j) {
-    if (!v.is_string()) return std::unexpected(field + ": expected names, got " + v.dump());
-    values.push_back(v.get<std::string>());
-  }
-  return values;
-}
-
 // True when `interval` is a whole multiple of `dt` (to 1e-9 relative).
 bool multipleOf(double interval, double dt) {
   const double ratio = interval / dt;
   return std::abs(ratio - std::round(ratio)) < 1e-9 * ratio;
 }
 
-std::expected<SweepSpec, std::string> parseSpec(const json& j, const std::string& source,
-                                                EngineRegistry& registry) {
-  auto bad = [&](const std::string& message) { return std::unexpected(source + ": " + message); };
-  if (!j.is_object()) return bad("expected an object");
-  static const std::set<std::string> known = {
-      "$comment",        "name",     "scenes",          "engines",  "integrators", "dt",
-      "stiffness_scale", "duration", "sample_interval", "reference", "engines_file"};
-  for (auto it = j.begin(); it != j.end(); ++it) {
-    if (!known.count(it.key())) return bad(it.key() + ": unknown field (see docs/sweeps.md)");
-  }
+constexpr const char* kSchema = "docs/sweeps.md";
+
+SweepSpec readSpec(const json& j, const std::string& source, EngineRegistry& registry) {
+  using mysim::FieldError;
+  mysim::FieldReader top(j, "");
   SweepSpec s;
   s.source = source;
-  s.name = j.value("name", fs::path(source).stem().string());
+  s.name = top.text("name", fs::path(source).stem().string());
+  if (s.name.empty() || s.name.find('/') != std::string::npos || s.name[0] == '.') {
+    mysim::failField("name", "a plain name (it names the results table)", top.raw("name"));
+  }
   const fs::path base = fs::path(source).parent_path();
-  if (j.contains("engines_file")) {
-    if (!j["engines_file"].is_string()) return bad("engines_file: expected a path");
-    s.engines_file = (base / j["engines_file"].get<std::string>()).lexically_normal().string();
+  if (top.has("engines_file")) {
+    s.engines_file = (base / top.text("engines_file")).lexically_normal().string();
     const auto& read = registry.enginesFiles();
     if (std::find(read.begin(), read.end(), s.engines_file) == read.end()) {
       if (auto added = registry.addEnginesFile(s.engines_file); !added) {
-        return bad("engines_file: " + added.error());
+        throw FieldError{"engines_file", added.error()};
       }
     }
   }
-  if (!j.contains("scenes")) return bad("scenes: missing (required)");
-  auto scenes = stringList(j["scenes"], "scenes");
-  if (!scenes) return bad(scenes.error());
-  for (std::size_t k = 0; k < scenes->size(); ++k) {
-    const std::string path = (base / (*scenes)[k]).lexically_normal().string();
+  const std::vector<std::string> scenes = top.textList("scenes");
+  for (std::size_t k = 0; k < scenes.size(); ++k) {
+    const std::string path = (base / scenes[k]).lexically_normal().string();
     auto scene = registry.loadScene(path);
-    if (!scene) return bad("scenes[" + std::to_string(k) + "]: " + scene.error());
+    if (!scene) throw FieldError{"scenes[" + std::to_string(k) + "]", scene.error()};
     s.scenes.push_back(path);
     s.loaded.emplace(path, std::move(*scene));
   }
-  if (j.contains("engines")) {
-    auto engines = stringList(j["engines"], "engines");
-    if (!engines) return bad(engines.error());
-    for (const std::string& e : *engines) {
-      if (e.find(':') != std::string::npos)
-        return bad("engines: list integrators under \"integrators\", not as " + e);
-      if (auto ok = registry.check(e); !ok) return bad("engines: " + ok.error());
-    }
-    s.engines = *engines;
-  } else {
-    s.engines = {"mysim"};
-  }
+  s.engines = top.has("engines") ? top.textList("engines") : std::vector<std::string>{"mysim"};
   for (const std::string& e : s.engines) {
+    if (e.find(':') != std::string::npos) {
+      throw FieldError{"engines", "list integrators under \"integrators\", not as " + e};
+    }
+    if (auto ok = registry.check(e); !ok) throw FieldError{"engines", ok.error()};
     if (registry.find(e)->takes_integrator) s.integrator_engines.push_back(e);
   }
-  if (j.contains("integrators")) {
-    auto integrators = stringList(j["integrators"], "integrators");
-    if (!integrators) return bad(integrators.error());
-    for (const std::string& name : *integrators) {
-      auto canonical = mysim::canonicalIntegratorName(name);
-      if (!canonical) return bad("integrators: " + canonical.error());
-      s.integrators.push_back(*canonical);
+  s.integrators.clear();
+  for (const std::string& name :
+       top.has("integrators") ? top.textList("integrators") : std::vector<std::string>{"rk4"}) {
+    auto canonical = mysim::canonicalIntegratorName(name);
+    if (!canonical) throw FieldError{"integrators", canonical.error()};
+    s.integrators.push_back(*canonical);
+  }
+  s.dts = top.positiveList("dt");
+  if (top.has("stiffness_scale")) s.stiffness_scales = top.positiveList("stiffness_scale");
+  if (top.has("duration")) s.duration = top.positive("duration");
+  s.sample_interval = top.positive("sample_interval", *std::max_element(s.dts.begin(), s.dts.end()));
+  for (std::size_t k = 0; k < s.dts.size(); ++k) {
+    if (!multipleOf(s.sample_interval, s.dts[k])) {
+      throw FieldError{"sample_interval", number(s.sample_interval) + " s is not a multiple of dt " +
+                                              number(s.dts[k]) + " s (frames of all runs must line up)"};
     }
-  } else {
-    s.integrators = {"rk4"};
-  }
-  if (!j.contains("dt")) return bad("dt: missing (required)");
-  auto dts = positiveList(j["dt"], "dt");
-  if (!dts) return bad(dts.error());
-  s.dts = *dts;
-  if (j.contains("stiffness_scale")) {
-    auto scales = positiveList(j["stiffness_scale"], "stiffness_scale");
-    if (!scales) return bad(scales.error());
-    s.stiffness_scales = *scales;
-  }
-  if (j.contains("duration")) {
-    if (!j["duration"].is_number() || !(j["duration"].get<double>() > 0))
-      return bad("duration: expected a number > 0");
-    s.duration = j["duration"].get<double>();
-  }
-  s.sample_interval = *std::max_element(s.dts.begin(), s.dts.end());
-  if (j.contains("sample_interval")) {
-    if (!j["sample_interval"].is_number() || !(j["sample_interval"].get<double>() > 0)) {
-      return bad("sample_interval: expected a number > 0");
-    }
-    s.sample_interval = j["sample_interval"].get<double>();
-  }
-  for (double dt : s.dts) {
-    if (!multipleOf(s.sample_interval, dt)) {
-      return bad("sample_interval: " + number(s.sample_interval) + " s is not a multiple of dt " +
-                 number(dt) + " s (frames of all runs must line up)");
+    // Every scene's run (or the spec's duration) must hold at least one step.
+    for (const auto& [path, scene] : s.loaded) {
+      const double duration = s.duration.value_or(scene.duration);
+      if (s.dts[k] > duration) {
+        throw FieldError{"dt[" + std::to_string(k) + "]",
+                         "a step no longer than the duration (" + number(s.dts[k]) + " s > " +
+                             number(duration) + " s of " + path + ")"};
+      }
     }
   }
-  if (!j.contains("reference"))
-    return bad("reference: missing (\"closed_form\" or {\"integrator\", \"refine\"})");
-  const json& ref = j["reference"];
+  const json& ref = top.raw("reference");
   if (ref.is_string() && ref.get<std::string>() == "closed_form") {
     s.reference_closed_form = true;
   } else if (ref.is_object()) {
-    auto name = mysim::canonicalIntegratorName(ref.value("integrator", "rk4"));
-    if (!name) return bad("reference.integrator: " + name.error());
+    mysim::FieldReader r = top.object("reference");
+    auto name = mysim::canonicalIntegratorName(r.text("integrator", "rk4"));
+    if (!name) throw FieldError{"reference.integrator", name.error()};
     s.reference_integrator = *name;
-    if (ref.contains("refine") &&
-        (!ref["refine"].is_number_integer() || ref["refine"].get<int>() < 1)) {
-      return bad("reference.refine: expected an integer >= 1");
-    }
-    s.reference_refine = ref.value("refine", 16);
+    s.reference_refine = static_cast<int>(r.integer("refine", 1, 1'000'000, 16));
+    r.refuseUnknown(kSchema);
   } else {
-    return bad("reference: expected \"closed_form\" or {\"integrator\": NAME, \"refine\": N}");
+    mysim::failField("reference", "\"closed_form\" or {\"integrator\": NAME, \"refine\": N}", ref);
   }
+  top.refuseUnknown(kSchema);
   return s;
 }
 
@@ -173,15 +121,9 @@ std::expected<SweepSpec, std::string> parseSpec(const json& j, const std::string
 
 std::expected<SweepSpec, std::string> loadSweepSpec(const std::string& path,
                                                     EngineRegistry& registry) {
-  std::ifstream in(path);
-  if (!in) return std::unexpected(path + ": cannot open the sweep spec");
-  json j;
-  try {
-    j = json::parse(in);
-  } catch (const json::parse_error& e) {
-    return std::unexpected(path + ": not valid JSON: " + e.what());
-  }
-  return parseSpec(j, path, registry);
+  auto root = mysim::readJsonFile(path, "sweep spec");
+  if (!root) return std::unexpected(root.error());
+  return mysim::readFields<SweepSpec>(path, [&] { return readSpec(*root, path, registry); });
 }
 
 std::vector<SweepCase> expandSweep(const SweepSpec& spec) {

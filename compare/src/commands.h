@@ -1,5 +1,6 @@
 #pragma once
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <cstdlib>
 #include <optional>
 #include <string>
@@ -10,8 +11,19 @@
 namespace springcheck {
 
 // Exit codes of the springcheck executable (README). kEngineFailed: an external engine crashed,
-// timed out or returned a result that failed its checks.
-enum ExitCode : int { kOk = 0, kFailure = 1, kBadInput = 2, kBlowUp = 3, kEngineFailed = 4 };
+// timed out or returned a result that failed its checks. kSolverLimit: an adaptive integrator
+// stopped the run at its step limits, or a linear solve stopped short of its tolerance.
+enum ExitCode : int {
+  kOk = 0,
+  kFailure = 1,
+  kBadInput = 2,
+  kBlowUp = 3,
+  kEngineFailed = 4,
+  kSolverLimit = 5
+};
+
+// The exit code a finished run's status calls for ("ok", "blowup", "step-limit", ...).
+int exitCodeForStatus(const std::string& status);
 
 // --engines-file FILE (repeatable): the user's own engines, for every command that takes
 // engines. The option's help lists the built-in engines.
@@ -26,8 +38,8 @@ inline const CLI::Validator kPositive(
     [](std::string& text) -> std::string {
       char* end = nullptr;
       const double value = std::strtod(text.c_str(), &end);
-      if (end == text.c_str() || *end != '\0' || !(value > 0.0)) {
-        return "expected a number > 0, got " + text;
+      if (end == text.c_str() || *end != '\0' || !(value > 0.0) || !std::isfinite(value)) {
+        return "expected a finite number > 0, got " + text;
       }
       return "";
     },

@@ -36,7 +36,7 @@ int compare(const CompareOptions& o) {
       o.engines.empty() ? registry->names() : splitList(o.engines);
   auto comparison = compareScene(*registry, *scene, engines);
   if (!comparison) {
-    std::cerr << "error: --engines: " << comparison.error() << '\n';
+    std::cerr << "error: " << comparison.error() << '\n';
     return kBadInput;
   }
   printComparison(std::cout, *comparison);
@@ -47,10 +47,13 @@ int compare(const CompareOptions& o) {
   }
   std::cout << "results in " << dir << '\n';
   if (!comparison->failed.empty()) return kEngineFailed;
+  // A blow-up outranks a solver limit: it is the stronger statement about a run.
+  int code = kOk;
   for (const EngineMetrics& m : comparison->engines) {
-    if (m.blew_up) return kBlowUp;
+    if (m.status == "blowup") return kBlowUp;
+    if (m.status != "ok") code = kSolverLimit;
   }
-  return kOk;
+  return code;
 }
 
 }  // namespace

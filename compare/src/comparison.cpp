@@ -24,6 +24,9 @@ std::expected<Comparison, std::string> compareScene(const EngineRegistry& regist
   for (const std::string& engine : engines) {
     auto record = registry.run(engine, c.model, config);
     if (!record) {
+      if (record.error().kind == EngineError::Kind::Invalid) {
+        return std::unexpected(record.error().message);  // the run itself, not the engine
+      }
       (record.error().kind == EngineError::Kind::Failed ? c.failed : c.refused)
           .push_back({engine, record.error().message});
       continue;
@@ -75,7 +78,12 @@ void printComparison(std::ostream& out, const Comparison& c) {
     out << '\n';
   }
   for (const EngineMetrics& m : c.engines) {
-    if (m.blew_up) out << "  " << m.engine << ": BLOW-UP at t = " << m.blowup_time << " s\n";
+    if (m.blew_up) {
+      out << "  " << m.engine << ": " << (m.status == "blowup" ? "BLOW-UP" : "STOPPED (" + m.status + ")")
+          << " at t = " << m.blowup_time << " s\n";
+    } else if (m.status != "ok") {
+      out << "  " << m.engine << ": " << m.status << "\n";
+    }
   }
   if (c.pairs.empty()) return;
   std::snprintf(line, sizeof line, "  %-40s", "per pair");
@@ -117,6 +125,7 @@ json metricsJson(const EngineMetrics& m) {
     j["closed_form"] = {{"quantity", m.closed_form->quantity}, {"exact", m.closed_form->exact}};
   }
   j["blowup_time"] = m.blew_up ? json(m.blowup_time) : json();
+  j["status"] = m.status;
   return j;
 }
 
@@ -172,7 +181,7 @@ std::expected<void, std::string> writeComparison(const std::string& dir, const C
   for (const MetricInfo& info : metricCatalog()) {
     if (!info.pair) engines << ',' << info.name;
   }
-  engines << ",wall_seconds,steps\n";
+  engines << ",wall_seconds,steps,status\n";
   for (const EngineMetrics& m : c.engines) {
     engines << m.engine;
     for (const MetricInfo& info : metricCatalog()) {
@@ -181,7 +190,7 @@ std::expected<void, std::string> writeComparison(const std::string& dir, const C
       engines << ',';
       if (v) engines << *v;
     }
-    engines << ',' << m.wall_seconds << ',' << m.steps << '\n';
+    engines << ',' << m.wall_seconds << ',' << m.steps << ',' << m.status << '\n';
   }
 
   std::ofstream pairs(fs::path(dir) / "pair_metrics.csv");

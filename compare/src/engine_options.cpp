@@ -22,6 +22,12 @@ std::optional<EngineRegistry> makeRegistry(const std::vector<std::string>& files
   return registry;
 }
 
+int exitCodeForStatus(const std::string& status) {
+  if (status == "ok") return kOk;
+  if (status == "blowup") return kBlowUp;
+  return kSolverLimit;
+}
+
 int exitCodeFor(const EngineError& error) {
   return error.kind == EngineError::Kind::Failed ? kEngineFailed : kBadInput;
 }

@@ -1,6 +1,7 @@
 #include "compare/engine_registry.h"
 
 #include "engines/engines.h"
+#include "mysim/run_limits.h"
 #include "mysim/scene_file.h"
 
 namespace springcheck {
@@ -94,6 +95,19 @@ std::expected<std::pair<const Engine*, RunConfig>, EngineError> EngineRegistry::
   return std::pair{engine, std::move(resolved)};
 }
 
+namespace {
+
+// The limits every run is held to, whatever set its step and duration.
+std::optional<EngineError> limitError(const mysim::Model& model, const RunConfig& config) {
+  const double particles = model.isCircle() ? 1 : model.particleCount();
+  auto error = mysim::checkRunLimits(particles, model.springs.size(), config.run);
+  if (!error) return std::nullopt;
+  return EngineError{EngineError::Kind::Invalid,
+                     config.source + ": " + error->field + ": " + error->message};
+}
+
+}  // namespace
+
 std::expected<void, std::string> EngineRegistry::check(const std::string& spec) const {
   auto resolved = resolve(spec, RunConfig{});
   if (!resolved) return std::unexpected(resolved.error().message);
@@ -105,6 +119,7 @@ std::expected<EngineInstance, EngineError> EngineRegistry::build(const std::stri
                                                                  const RunConfig& config) const {
   auto resolved = resolve(spec, config);
   if (!resolved) return std::unexpected(resolved.error());
+  if (auto limit = limitError(model, config)) return std::unexpected(*limit);
   return resolved->first->build(model, resolved->second);
 }
 
@@ -113,6 +128,7 @@ std::expected<mysim::RunRecord, EngineError> EngineRegistry::run(const std::stri
                                                                  const RunConfig& config) const {
   auto resolved = resolve(spec, config);
   if (!resolved) return std::unexpected(resolved.error());
+  if (auto limit = limitError(model, config)) return std::unexpected(*limit);
   const auto& [engine, resolved_config] = *resolved;
   std::expected<mysim::RunRecord, EngineError> record;
   if (engine->run) {

@@ -40,14 +40,14 @@ int runScene(const RunOptions& o) {
   if (o.classic_iterations > 0) {
     scene->engine_settings["bullet"]["classic_iterations"] = o.classic_iterations;
   }
-  if (scene->dt > scene->duration) {
-    std::cerr << "error: --dt " << scene->dt << " is longer than the duration " << scene->duration
-              << '\n';
-    return kBadInput;
-  }
   auto record = registry->run(o.engine, *scene);
   if (!record) {
-    std::cerr << "error: " << record.error().message << '\n';
+    const bool overridden = o.dt > 0 || o.duration > 0;
+    std::cerr << "error: " << record.error().message
+              << (record.error().kind == EngineError::Kind::Invalid && overridden
+                      ? " (with the --dt / --duration given)"
+                      : "")
+              << '\n';
     return exitCodeFor(record.error());
   }
   const std::string dir = o.out.empty() ? "out/" + scene->name + "/" + o.engine : o.out;
@@ -59,11 +59,15 @@ int runScene(const RunOptions& o) {
             << record->dt << " s]: " << record->steps << " steps in " << record->wall_seconds
             << " s -> " << dir << '\n';
   if (record->blowup) {
-    std::cerr << "blow-up: t = " << record->blowup->time << " s (step " << record->blowup->step
-              << "), " << record->blowup->check << ": " << record->blowup->detail << '\n';
-    return kBlowUp;
+    std::cerr << record->status() << ": t = " << record->blowup->time << " s (step "
+              << record->blowup->step << "), " << record->blowup->check << ": "
+              << record->blowup->detail << '\n';
+  } else if (record->status() != "ok") {
+    std::cerr << record->status() << ": " << record->counts.solver_failures
+              << " linear solves stopped short of their tolerance (cg_tolerance, "
+                 "cg_max_iterations)\n";
   }
-  return kOk;
+  return exitCodeForStatus(record->status());
 }
 
 }  // namespace

@@ -16,6 +16,7 @@ EngineMetrics engineMetrics(const mysim::Scene& scene, const mysim::Model& model
   EngineMetrics m;
   m.engine = run.engine;
   m.blew_up = r.blowup.has_value();
+  m.status = r.status();
   m.blowup_time = r.blowup ? r.blowup->time : 0.0;
   m.wall_seconds = r.wall_seconds;
   m.steps = r.steps;

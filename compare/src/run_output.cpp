@@ -47,6 +47,7 @@ json summaryJson(const mysim::Scene& scene, const mysim::RunRecord& r) {
             {"particles", r.frames.empty() ? 0 : r.frames.front().rows()},
             {"frames", r.frames.size()},
             {"complete", !r.blowup.has_value()},
+            {"status", r.status()},
             {"notes", r.notes},
             {"peak_resident_bytes", peakResidentBytes()}};
   s["energy_start"] = r.energies.empty() ? json() : energyJson(r.energies.front());

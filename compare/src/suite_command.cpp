@@ -48,6 +48,11 @@ int runSuite(const SuiteOptions& o) {
       continue;
     }
     auto comparison = compareScene(*registry, *scene, registry->names());
+    if (!comparison) {
+      std::cerr << "error: " << comparison.error() << '\n';
+      code = kBadInput;
+      continue;
+    }
     printComparison(std::cout, *comparison);
     if (!comparison->failed.empty() && code == kOk) code = kEngineFailed;
     if (auto written = writeComparison(o.out + "/" + scene->name, *comparison); !written) {
@@ -56,7 +61,7 @@ int runSuite(const SuiteOptions& o) {
     }
     for (const EngineMetrics& m : comparison->engines) {
       // The seed scenes run at the seed's own (stable) settings: a blow-up there is a bug.
-      if (m.blew_up && code == kOk) code = kBlowUp;
+      if (m.status != "ok" && code == kOk) code = exitCodeForStatus(m.status);
     }
     std::cout << '\n';
     std::error_code ec;

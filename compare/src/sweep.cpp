@@ -233,7 +233,7 @@ SweepRow runCase(const EngineRegistry& registry, const SweepSpec& spec, const Sw
     return row;
   }
   const mysim::RunRecord& r = *record;
-  set("status", r.blowup ? "blowup" : "ok");
+  set("status", r.status());
   if (r.blowup) {
     set("blowup_time", number(r.blowup->time));
     set("blowup_check", r.blowup->check);

@@ -8,6 +8,7 @@ StepCounts& StepCounts::operator+=(const StepCounts& o) {
   derivative_evaluations += o.derivative_evaluations;
   linear_iterations += o.linear_iterations;
   solver_failures += o.solver_failures;
+  gave_up = gave_up || o.gave_up;
   return *this;
 }
 

@@ -1,8 +1,8 @@
 #include "mysim/scene_file.h"
 
 #include "mysim/json_input.h"
+#include "mysim/run_limits.h"
 
-#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
@@ -168,36 +168,30 @@ void readForces(FieldReader& forces, Scene& scene) {
   }
 }
 
-// Rough bytes per particle of a run: state and integrator buffers (~30 vectors of 6 doubles),
-// up to 12 springs, and the sampled trajectory (6 doubles a frame).
-double bytesPerParticle(const Scene& scene) {
-  const double frames = scene.sample_interval > 0.0
-                            ? std::min(1e6, scene.duration / scene.sample_interval) + 2
-                            : 202.0;
-  return 30 * 48 + 12 * 40 + frames * 48;
-}
-
-double physicalMemoryBytes() {
-  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-  return pages > 0 && page > 0 ? static_cast<double>(pages) * page : 8e9;
+// Particles and springs a scene will build (springs: an upper bound for a cloth), for the limits.
+std::pair<double, double> sizeOf(const Scene& scene) {
+  switch (scene.kind) {
+    case SystemKind::Circle:
+      return {1, 0};
+    case SystemKind::Chain:
+      return {double(scene.chain.particles), double(scene.chain.particles - 1)};
+    case SystemKind::Cloth: {
+      const double n = double(scene.cloth.rows) * scene.cloth.cols;
+      return {n, 6 * n};
+    }
+    case SystemKind::Particles:
+      return {double(scene.particles.size()), double(scene.springs.size())};
+  }
+  return {0, 0};
 }
 
 void checkWhole(Scene& scene) {
-  int count = 0;
-  std::vector<char> pinned;
-  if (scene.kind == SystemKind::Chain) count = scene.chain.particles;
-  if (scene.kind == SystemKind::Cloth) {
-    const double n = static_cast<double>(scene.cloth.rows) * scene.cloth.cols;
-    const double need = n * bytesPerParticle(scene), have = physicalMemoryBytes();
-    if (need > 0.5 * have) {
-      std::ostringstream m;
-      m << "a " << scene.cloth.rows << " x " << scene.cloth.cols << " grid needs about "
-        << need / (1 << 30) << " GiB, more than half of this machine's " << have / (1 << 30)
-        << " GiB";
-      throw FieldError{"system.rows", m.str()};
-    }
-    count = static_cast<int>(n);
+  const auto [particles, springs] = sizeOf(scene);
+  if (auto error = checkRunLimits(particles, springs,
+                                  {scene.dt, scene.duration, scene.sample_interval})) {
+    throw FieldError{error->field, error->message};
   }
+  const int count = static_cast<int>(particles);
   if (scene.kind == SystemKind::Chain || scene.kind == SystemKind::Cloth) {
     if (static_cast<int>(scene.pins.size()) >= count) {
       throw FieldError{"system.pins", "every particle is pinned: nothing would move"};
@@ -218,9 +212,6 @@ void checkWhole(Scene& scene) {
                              "first-order ODE (use euler, trapezoidal, rk4, dopri5)"};
       }
     }
-  }
-  if (scene.dt > scene.duration) {
-    throw FieldError{"integrator.dt", "a step no longer than integrator.duration"};
   }
 }
 

@@ -5,6 +5,12 @@
 #include <cmath>
 
 namespace mysim {
+std::string RunRecord::status() const {
+  if (blowup) return blowup->check == "step-limit" ? "step-limit" : "blowup";
+  if (counts.solver_failures > 0) return "solver-not-converged";
+  return "ok";
+}
+
 long stepCount(const RunSettings& settings) {
   return std::max(1L, std::lround(settings.duration / settings.dt));
 }
@@ -51,6 +57,12 @@ RunRecord simulate(OdeSystem& system, Stepper& stepper, State state, const RunSe
     stepping += Clock::now() - start;
     record.steps = step;
     if (driven) external_work += system.externalWork(before, state);
+    if (record.counts.gave_up) {
+      record.blowup = BlowUp{state.t, step, "step-limit",
+                             "the adaptive integrator could not meet its tolerance above its "
+                             "minimum step or within its maximum steps; the run stops here"};
+      break;
+    }
     // One health check a step: the first bad state is reported, never written.
     if (auto bad = system.checkHealth(state)) {
       record.blowup = BlowUp{state.t, step, bad->check, bad->detail};

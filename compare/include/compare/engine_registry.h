@@ -40,9 +40,10 @@ struct EngineInstance {
 
 // Why an engine did not run. Refused: it cannot represent the model (the message names the
 // scene field and what to change). Failed: it ran and misbehaved (an external program that
-// crashed, timed out or returned a bad result). Unknown: no such engine.
+// crashed, timed out or returned a bad result). Unknown: no such engine. Invalid: the run's
+// settings break a limit every run is held to (mysim/run_limits.h).
 struct EngineError {
-  enum class Kind { Unknown, Refused, Failed } kind;
+  enum class Kind { Unknown, Refused, Failed, Invalid } kind;
   std::string message;
 };
 

@@ -23,7 +23,8 @@ struct EngineRun {
 // Every single-run metric of one engine on one scene.
 struct EngineMetrics {
   std::string engine;
-  bool blew_up = false;
+  bool blew_up = false;  // the run stopped early (a blow-up or an adaptive step limit)
+  std::string status;    // RunRecord::status()
   double blowup_time = 0.0;
   double wall_seconds = 0.0;
   long steps = 0;

@@ -17,7 +17,7 @@ struct BlowUpLimits {
 struct BlowUp {
   double time = 0.0;  // s, the time of the first unhealthy state
   long step = 0;
-  std::string check;  // "non-finite", "strain", "energy", "linear-solver"
+  std::string check;  // "non-finite", "strain", "energy", "step-limit" (adaptive), "engine"
   std::string detail;
 };
 

@@ -17,6 +17,9 @@ struct StepCounts {
   long derivative_evaluations = 0;
   long linear_iterations = 0;  // CG iterations (backward Euler only)
   long solver_failures = 0;    // linear solves that did not reach their tolerance
+  // An adaptive method could not meet its tolerance within its limits (minimum step, maximum
+  // internal steps): the step stopped short and the run must stop there.
+  bool gave_up = false;
 
   StepCounts& operator+=(const StepCounts& o);
 };

@@ -27,6 +27,11 @@ struct RunRecord {
   std::vector<EnergyTerms> energies;  // (F) where the system has energy
   std::optional<BlowUp> blowup;
   std::vector<std::string> notes;  // how the engine differs from the scene as written, if at all
+
+  // "ok"; "blowup" (a health check failed); "step-limit" (an adaptive integrator stopped the run,
+  // unable to meet its tolerance); "solver-not-converged" (the run is complete, but some linear
+  // solves stopped short of their tolerance: less accurate than asked).
+  std::string status() const;
 };
 
 struct RunSettings {

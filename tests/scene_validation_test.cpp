@@ -20,6 +20,14 @@ json validCloth() {
   })");
 }
 
+json validChain() {
+  return json::parse(R"({
+    "system": {"type": "chain", "particles": 5, "rest_length": 0.1, "particle_mass": 0.01,
+               "stiffness": 100},
+    "integrator": {"name": "rk4", "dt": 0.01, "duration": 1}
+  })");
+}
+
 json validParticles() {
   return json::parse(R"({
     "system": {"type": "particles",
@@ -122,7 +130,14 @@ INSTANTIATE_TEST_SUITE_P(
                   j["system"]["cols"] = 100000;
                   return j;
                 },
-                "system.rows", "GiB"},
+                "system", "GiB"},
+        BadCase{"ChainTooLargeForMemory",
+                [] {
+                  json j = validChain();
+                  j["system"]["particles"] = 10'000'000;
+                  return j;
+                },
+                "system", "GiB"},
         BadCase{"UnknownField",
                 [] { return with(validCloth(), "/system/stifness"_json_pointer, 3); },
                 "system.stifness", "unknown field"},
@@ -146,6 +161,12 @@ INSTANTIATE_TEST_SUITE_P(
                               json{{"strength", 1}, {"gust", 2}});
                 },
                 "forces.wind.gust", "[0, 1]"},
+        BadCase{"NameLeavesTheOutputFolder",
+                [] { return with(validCloth(), "/name"_json_pointer, "../../x"); },
+                "name", "letters, digits"},
+        BadCase{"StepGivesMoreStepsThanTheLimit",
+                [] { return with(validCloth(), "/integrator/dt"_json_pointer, 1e-320); },
+                "integrator.dt", "at most 1e+09"},
         BadCase{"StepLongerThanDuration",
                 [] { return with(validCloth(), "/integrator/dt"_json_pointer, 5); },
                 "integrator.dt", "no longer than"}),
@@ -156,6 +177,48 @@ TEST(SceneFile, InvalidJsonNamesTheFileAndPosition) {
   ASSERT_FALSE(parsed);
   EXPECT_NE(parsed.error().find("bad.json: not valid JSON"), std::string::npos);
   EXPECT_NE(parsed.error().find("line 1"), std::string::npos) << parsed.error();
+}
+
+// What the plain parser would take or crash on, refused as it is read, naming the field.
+TEST(SceneFile, NumberBeyondTheDoubleRangeIsRefusedNamingItsField) {
+  std::string text = with(validCloth(), "/system/particle_mass"_json_pointer, 7.75).dump();
+  text.replace(text.find("7.75"), 4, "1e400");
+  auto parsed = parseScene(text, "bad.json");
+  ASSERT_FALSE(parsed);
+  EXPECT_NE(parsed.error().find("bad.json: system.particle_mass: expected a number within the "
+                                "double range"),
+            std::string::npos)
+      << parsed.error();
+}
+
+TEST(SceneFile, DuplicateKeysAreRefusedNotTheLastOneTaken) {
+  auto parsed = parseScene(
+      R"({"system": {"type": "circle"}, "integrator": {"dt": -1, "dt": 0.04, "duration": 1}})",
+      "dup.json");
+  ASSERT_FALSE(parsed);
+  EXPECT_NE(parsed.error().find("dup.json: integrator.dt: given twice"), std::string::npos)
+      << parsed.error();
+}
+
+TEST(SceneFile, DeepNestingIsRefusedAtTheDepthLimitWithoutRecursing) {
+  // 100 000 levels of a wrong type for a field: once a stack overflow while printing it.
+  const int depth = 100'000;
+  const std::string text = R"({"system": {"type": "chain", "particles": )" +
+                           std::string(depth, '[') + std::string(depth, ']') + "}}";
+  auto parsed = parseScene(text, "deep.json");
+  ASSERT_FALSE(parsed);
+  EXPECT_NE(parsed.error().find("deep.json: system.particles"), std::string::npos)
+      << parsed.error().substr(0, 200);
+  EXPECT_NE(parsed.error().find("nested deeper than 64"), std::string::npos);
+  EXPECT_LT(parsed.error().size(), 300u);  // the value is not printed
+}
+
+TEST(SceneFile, ADirectoryIsRefusedAsNotAFile) {
+  auto parsed = loadScene(SPRINGCHECK_SOURCE_DIR "/scenes");
+  ASSERT_FALSE(parsed);
+  EXPECT_NE(parsed.error().find("scenes: is a directory (expected a scene file)"),
+            std::string::npos)
+      << parsed.error();
 }
 
 TEST(SceneFile, MissingFileIsAnError) {

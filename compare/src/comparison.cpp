@@ -5,6 +5,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "compare/atomic_file.h"
+#include "compare/csv.h"
 #include "compare/penetration_metric.h"
 #include "compare/run_output.h"
 #include "compare/sag_metric.h"
@@ -157,94 +159,106 @@ std::expected<void, std::string> writeComparison(const std::string& dir, const C
       return w;
     }
   }
+  auto in = [&](const char* name) { return (fs::path(dir) / name).string(); };
+  // comparison.json last: a folder with one holds a whole comparison.
+  std::error_code ec;
+  fs::remove(in("comparison.json"), ec);
+
+  auto done = writeFileAtomically(in("engine_metrics.csv"), [&](std::ostream& engines) {
+    engines.precision(10);
+    engines << "engine";
+    for (const MetricInfo& info : metricCatalog()) {
+      if (!info.pair) engines << ',' << info.name;
+    }
+    engines << ",wall_seconds,steps,status\n";
+    for (const EngineMetrics& m : c.engines) {
+      engines << csvField(m.engine);
+      for (const MetricInfo& info : metricCatalog()) {
+        if (info.pair) continue;
+        const auto v = metricValue(m, info.name);
+        engines << ',';
+        if (v) engines << *v;
+      }
+      engines << ',' << m.wall_seconds << ',' << m.steps << ',' << m.status << '\n';
+    }
+  });
+  if (!done) return done;
+
+  done = writeFileAtomically(in("pair_metrics.csv"), [&](std::ostream& pairs) {
+    pairs.precision(10);
+    pairs << "a,b";
+    for (const MetricInfo& info : metricCatalog()) {
+      if (info.pair) pairs << ',' << info.name;
+    }
+    pairs << '\n';
+    for (const PairMetrics& p : c.pairs) {
+      pairs << csvField(p.a) << ',' << csvField(p.b);
+      for (const MetricInfo& info : metricCatalog()) {
+        if (!info.pair) continue;
+        const auto v = metricValue(p, info.name);
+        pairs << ',';
+        if (v) pairs << *v;
+      }
+      pairs << '\n';
+    }
+  });
+  if (!done) return done;
+
+  // Per-node distance of every run's final shape to the first run's (for drape colour maps).
+  done = writeFileAtomically(in("node_distance.csv"), [&](std::ostream& nodes) {
+    nodes.precision(10);
+    nodes << "engine,reference_engine,node,distance\n";
+    for (std::size_t r = 1; r < c.runs.size() && !c.runs.empty(); ++r) {
+      if (c.runs[0].record.blowup || c.runs[r].record.blowup) continue;
+      const mysim::ParticleRows& a = c.runs[0].record.frames.back();
+      const mysim::ParticleRows& b = c.runs[r].record.frames.back();
+      for (int i = 0; i < a.rows(); ++i) {
+        nodes << csvField(c.runs[r].engine) << ',' << csvField(c.runs[0].engine) << ',' << i << ','
+              << (a.row(i).head<3>() - b.row(i).head<3>()).norm() << '\n';
+      }
+    }
+  });
+  if (!done) return done;
+
+  done = writeFileAtomically(in("series.csv"), [&](std::ostream& series) {
+    series.precision(10);
+    series << "engine,t,sag_lowest,sag_free_middle,penetration_deepest,energy_drift_total\n";
+    for (std::size_t r = 0; r < c.runs.size(); ++r) {
+      const mysim::RunRecord& rec = c.runs[r].record;
+      if (c.model.isCircle()) continue;
+      const SagSeries sag = sagOverTime(c.model, rec);
+      const EnergyDrift& drift = c.engines[r].drift;
+      for (std::size_t f = 0; f < rec.frames.size(); ++f) {
+        series << csvField(c.runs[r].engine) << ',' << rec.times[f] << ',' << sag.lowest[f] << ',';
+        if (!sag.free_middle.empty()) series << sag.free_middle[f];
+        series << ',';
+        if (c.model.sphere) series << penetration(*c.model.sphere, rec.frames[f]).deepest;
+        series << ',';
+        if (f < drift.total.size()) series << drift.total[f];
+        series << '\n';
+      }
+    }
+  });
+  if (!done) return done;
+
   json j = {{"scene", c.scene.name},
             {"scene_file", c.scene.source},
             {"dt", c.scene.dt},
             {"duration", c.scene.duration},
-            {"refused", json::array()}};
-  j["failed"] = json::array();
+            {"refused", json::array()},
+            {"failed", json::array()},
+            {"engines", json::array()},
+            {"pairs", json::array()}};
   for (const Comparison::Refusal& r : c.failed) {
     j["failed"].push_back({{"engine", r.engine}, {"reason", r.reason}});
   }
   for (const Comparison::Refusal& r : c.refused) {
     j["refused"].push_back({{"engine", r.engine}, {"reason", r.reason}});
   }
-  j["engines"] = json::array();
   for (const EngineMetrics& m : c.engines) j["engines"].push_back(metricsJson(m));
-  j["pairs"] = json::array();
   for (const PairMetrics& p : c.pairs) j["pairs"].push_back(pairJson(p));
-  std::ofstream(fs::path(dir) / "comparison.json") << j.dump(2) << '\n';
-
-  std::ofstream engines(fs::path(dir) / "engine_metrics.csv");
-  engines.precision(10);
-  engines << "engine";
-  for (const MetricInfo& info : metricCatalog()) {
-    if (!info.pair) engines << ',' << info.name;
-  }
-  engines << ",wall_seconds,steps,status\n";
-  for (const EngineMetrics& m : c.engines) {
-    engines << m.engine;
-    for (const MetricInfo& info : metricCatalog()) {
-      if (info.pair) continue;
-      const auto v = metricValue(m, info.name);
-      engines << ',';
-      if (v) engines << *v;
-    }
-    engines << ',' << m.wall_seconds << ',' << m.steps << ',' << m.status << '\n';
-  }
-
-  std::ofstream pairs(fs::path(dir) / "pair_metrics.csv");
-  pairs.precision(10);
-  pairs << "a,b";
-  for (const MetricInfo& info : metricCatalog()) {
-    if (info.pair) pairs << ',' << info.name;
-  }
-  pairs << '\n';
-  for (const PairMetrics& p : c.pairs) {
-    pairs << p.a << ',' << p.b;
-    for (const MetricInfo& info : metricCatalog()) {
-      if (!info.pair) continue;
-      const auto v = metricValue(p, info.name);
-      pairs << ',';
-      if (v) pairs << *v;
-    }
-    pairs << '\n';
-  }
-
-  // Per-node distance of every run's final shape to the first run's (for drape colour maps).
-  std::ofstream nodes(fs::path(dir) / "node_distance.csv");
-  nodes.precision(10);
-  nodes << "engine,reference_engine,node,distance\n";
-  for (std::size_t r = 1; r < c.runs.size() && !c.runs.empty(); ++r) {
-    if (c.runs[0].record.blowup || c.runs[r].record.blowup) continue;
-    const mysim::ParticleRows& a = c.runs[0].record.frames.back();
-    const mysim::ParticleRows& b = c.runs[r].record.frames.back();
-    for (int i = 0; i < a.rows(); ++i) {
-      nodes << c.runs[r].engine << ',' << c.runs[0].engine << ',' << i << ','
-            << (a.row(i).head<3>() - b.row(i).head<3>()).norm() << '\n';
-    }
-  }
-
-  std::ofstream series(fs::path(dir) / "series.csv");
-  series.precision(10);
-  series << "engine,t,sag_lowest,sag_free_middle,penetration_deepest,energy_drift_total\n";
-  for (std::size_t r = 0; r < c.runs.size(); ++r) {
-    const mysim::RunRecord& rec = c.runs[r].record;
-    if (c.scene.kind == mysim::SystemKind::Circle) continue;
-    const SagSeries sag = sagOverTime(c.model, rec);
-    const EnergyDrift& drift = c.engines[r].drift;
-    for (std::size_t f = 0; f < rec.frames.size(); ++f) {
-      series << c.runs[r].engine << ',' << rec.times[f] << ',' << sag.lowest[f] << ',';
-      if (!sag.free_middle.empty()) series << sag.free_middle[f];
-      series << ',';
-      if (c.model.sphere) series << penetration(*c.model.sphere, rec.frames[f]).deepest;
-      series << ',';
-      if (f < drift.total.size()) series << drift.total[f];
-      series << '\n';
-    }
-  }
-  if (!series) return std::unexpected("cannot write " + (fs::path(dir) / "series.csv").string());
-  return {};
+  return writeFileAtomically(in("comparison.json"),
+                             [&](std::ostream& out) { out << j.dump(2) << '\n'; });
 }
 
 }  // namespace springcheck

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "compare/atomic_file.h"
 #include "compare/gate.h"
 
 namespace springcheck {
@@ -43,8 +44,14 @@ void addGateCommand(CLI::App& app, int& exit_code) {
              {"problem", r.problem},
              {"measured", r.measured ? nlohmann::json(*r.measured) : nlohmann::json()}});
       }
-      std::ofstream(*json_out) << nlohmann::json{{"tolerances", *path}, {"checks", results}}.dump(2)
-                               << '\n';
+      const nlohmann::json all = {{"tolerances", *path}, {"checks", results}};
+      if (auto written = writeFileAtomically(
+              *json_out, [&](std::ostream& out) { out << all.dump(2) << '\n'; });
+          !written) {
+        std::cerr << "error: --json: " << written.error() << '\n';
+        exit_code = kFailure;
+        return;
+      }
     }
     exit_code = report.passed() ? kOk : kFailure;
   });

@@ -7,6 +7,7 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 
+#include "compare/atomic_file.h"
 #include "compare/npy.h"
 #include "mysim/cloth_mesh.h"
 
@@ -63,23 +64,6 @@ json summaryJson(const mysim::Scene& scene, const mysim::RunRecord& r) {
   return s;
 }
 
-// Writes through `write` into dir/name.tmp, then renames over dir/name.
-std::expected<void, std::string> writeFile(const fs::path& dir, const std::string& name,
-                                           const std::function<bool(const fs::path&)>& write) {
-  const fs::path final_path = dir / name, tmp = dir / (name + ".tmp");
-  if (!write(tmp)) return std::unexpected("cannot write " + tmp.string());
-  std::error_code ec;
-  fs::rename(tmp, final_path, ec);
-  if (ec) return std::unexpected("cannot rename " + tmp.string() + ": " + ec.message());
-  return {};
-}
-
-bool writeText(const fs::path& path, const std::function<void(std::ostream&)>& body) {
-  std::ofstream out(path);
-  body(out);
-  return static_cast<bool>(out);
-}
-
 }  // namespace
 
 std::expected<void, std::string> writeRunOutputs(const std::string& dir_name,
@@ -94,46 +78,40 @@ std::expected<void, std::string> writeRunOutputs(const std::string& dir_name,
   fs::remove(dir / "summary.json", ec);
 
   const mysim::ParticleRows& last = r.frames.back();
-  auto done = writeFile(dir, "final_state.csv", [&](const fs::path& p) {
-    return writeText(p, [&](std::ostream& out) {
-      out.precision(17);
-      out << "particle,x,y,z,vx,vy,vz\n";
-      for (int i = 0; i < last.rows(); ++i) {
-        out << i;
-        for (int k = 0; k < 6; ++k) out << ',' << last(i, k);
-        out << '\n';
-      }
-    });
+  auto in = [&](const char* name) { return (dir / name).string(); };
+  auto done = writeFileAtomically(in("final_state.csv"), [&](std::ostream& out) {
+    out.precision(17);
+    out << "particle,x,y,z,vx,vy,vz\n";
+    for (int i = 0; i < last.rows(); ++i) {
+      out << i;
+      for (int k = 0; k < 6; ++k) out << ',' << last(i, k);
+      out << '\n';
+    }
   });
   if (!done) return done;
 
   const long frames = static_cast<long>(r.frames.size()), particles = last.rows();
-  done = writeFile(dir, "trajectory.npy", [&](const fs::path& p) {
-    return writeNpy(p.string(), {frames, particles, 6}, [&](std::ostream& out) {
-      for (const mysim::ParticleRows& f : r.frames) {
-        // Frames are column-major (N x 6); the file wants each particle's six values together.
-        const Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor> rows = f;
-        out.write(reinterpret_cast<const char*>(rows.data()),
-                  static_cast<std::streamsize>(rows.size() * sizeof(double)));
-      }
-    });
+  done = writeNpy(in("trajectory.npy"), {frames, particles, 6}, [&](std::ostream& out) {
+    for (const mysim::ParticleRows& f : r.frames) {
+      // Frames are column-major (N x 6); the file wants each particle's six values together.
+      const Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor> rows = f;
+      out.write(reinterpret_cast<const char*>(rows.data()),
+                static_cast<std::streamsize>(rows.size() * sizeof(double)));
+    }
   });
   if (!done) return done;
-  done = writeFile(dir, "times.npy",
-                   [&](const fs::path& p) { return writeNpy(p.string(), {frames}, r.times); });
+  done = writeNpy(in("times.npy"), {frames}, r.times);
   if (!done) return done;
 
   if (!r.energies.empty()) {
-    done = writeFile(dir, "energy.csv", [&](const fs::path& p) {
-      return writeText(p, [&](std::ostream& out) {
-        out.precision(17);
-        out << "t,kinetic,gravity,spring,total,external_work\n";
-        for (std::size_t f = 0; f < r.energies.size(); ++f) {
-          const mysim::EnergyTerms& e = r.energies[f];
-          out << r.times[f] << ',' << e.kinetic << ',' << e.gravity << ',' << e.spring << ','
-              << e.total() << ',' << e.external_work << '\n';
-        }
-      });
+    done = writeFileAtomically(in("energy.csv"), [&](std::ostream& out) {
+      out.precision(17);
+      out << "t,kinetic,gravity,spring,total,external_work\n";
+      for (std::size_t f = 0; f < r.energies.size(); ++f) {
+        const mysim::EnergyTerms& e = r.energies[f];
+        out << r.times[f] << ',' << e.kinetic << ',' << e.gravity << ',' << e.spring << ','
+            << e.total() << ',' << e.external_work << '\n';
+      }
     });
     if (!done) return done;
   }
@@ -141,17 +119,14 @@ std::expected<void, std::string> writeRunOutputs(const std::string& dir_name,
   if (scene.kind == mysim::SystemKind::Cloth) {
     mysim::Vector x(3 * particles);
     for (int i = 0; i < particles; ++i) x.segment<3>(3 * i) = last.block<1, 3>(i, 0).transpose();
-    done = writeFile(dir, "final.obj", [&](const fs::path& p) {
-      return writeText(p, [&](std::ostream& out) {
-        mysim::writeObj(out, {scene.cloth.rows, scene.cloth.cols}, x);
-      });
+    done = writeFileAtomically(in("final.obj"), [&](std::ostream& out) {
+      mysim::writeObj(out, {scene.cloth.rows, scene.cloth.cols}, x);
     });
     if (!done) return done;
   }
 
-  return writeFile(dir, "summary.json", [&](const fs::path& p) {
-    return writeText(p, [&](std::ostream& out) { out << summaryJson(scene, r).dump(2) << '\n'; });
-  });
+  return writeFileAtomically(in("summary.json"),
+                             [&](std::ostream& out) { out << summaryJson(scene, r).dump(2) << '\n'; });
 }
 
 }  // namespace springcheck

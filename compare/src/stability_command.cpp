@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "commands.h"
+#include "compare/atomic_file.h"
 #include "compare/energy_metric.h"
 #include "compare/stability.h"
 
@@ -49,8 +50,8 @@ void parallelFor(int n, int jobs, const std::function<void(int)>& f) {
 }
 
 // Very long runs, very small masses, a very large cloth: what happens at the extremes.
-void writeExtremes(const std::string& path, int jobs) {
-  std::ofstream out(path);
+std::expected<void, std::string> writeExtremes(const std::string& path, int jobs) {
+  std::ostringstream out;
   out.precision(8);
   out << "case,integrator,quantity,value,unit\n";
   // 10^6 steps of the undamped oscillator at h w = 0.1.
@@ -107,6 +108,7 @@ void writeExtremes(const std::string& path, int jobs) {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   out << "process,all,peak resident memory," << usage.ru_maxrss / 1024.0 << ",MiB\n";
+  return writeFileAtomically(path, [&](std::ostream& file) { file << out.str(); });
 }
 
 int stability(const StabilityOptions& o) {
@@ -154,8 +156,13 @@ int stability(const StabilityOptions& o) {
       std::cerr << "stability: " << done << "/" << combos.size() << " done\n";
     }
   });
-  std::filesystem::create_directories(o.out);
-  std::ofstream out(o.out + "/stability.csv");
+  std::error_code ec;
+  std::filesystem::create_directories(o.out, ec);
+  if (ec) {
+    std::cerr << "error: --out: cannot create " << o.out << ": " << ec.message() << '\n';
+    return kFailure;
+  }
+  std::ostringstream out;
   out.precision(8);
   out << "system,integrator,stiffness,mass,omega,damping_ratio,h_stable,h_unstable,status,theory_h,"
          "ratio\n";
@@ -174,7 +181,18 @@ int stability(const StabilityOptions& o) {
                 l.integrator.c_str(), l.stiffness, l.mass, l.h_stable, cell(l.theory).c_str(),
                 l.h_stable * w, cell(ratio).substr(0, 6).c_str(), l.status.c_str());
   }
-  if (o.extremes) writeExtremes(o.out + "/extremes.csv", jobs);
+  if (auto written = writeFileAtomically(o.out + "/stability.csv",
+                                         [&](std::ostream& file) { file << out.str(); });
+      !written) {
+    std::cerr << "error: " << written.error() << '\n';
+    return kFailure;
+  }
+  if (o.extremes) {
+    if (auto written = writeExtremes(o.out + "/extremes.csv", jobs); !written) {
+      std::cerr << "error: " << written.error() << '\n';
+      return kFailure;
+    }
+  }
   std::cout << "results in " << o.out << '\n';
   return kOk;
 }

@@ -12,7 +12,9 @@
 #include <sstream>
 #include <thread>
 
+#include "compare/atomic_file.h"
 #include "compare/closed_form.h"
+#include "compare/csv.h"
 #include "compare/drape_metric.h"
 #include "compare/energy_metric.h"
 #include "compare/settling_metric.h"
@@ -205,12 +207,6 @@ std::pair<double, double> trajectoryError(const mysim::RunRecord& run,
   return {worst, last};
 }
 
-std::string sanitize(std::string text) {
-  std::replace(text.begin(), text.end(), ',', ';');
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  return text;
-}
-
 SweepRow runCase(const EngineRegistry& registry, const SweepSpec& spec, const SweepCase& c,
                  const std::map<ReferenceKey, mysim::RunRecord>& references) {
   SweepRow row = {std::to_string(c.id), c.scene,      c.engine,
@@ -223,13 +219,13 @@ SweepRow runCase(const EngineRegistry& registry, const SweepSpec& spec, const Sw
   auto run = caseRun(spec, c);
   if (!run) {
     set("status", "refused");
-    set("note", sanitize(run.error()));
+    set("note", (run.error()));
     return row;
   }
   auto record = registry.run(c.engine, run->model, run->config);
   if (!record) {
     set("status", record.error().kind == EngineError::Kind::Failed ? "failed" : "refused");
-    set("note", sanitize(record.error().message));
+    set("note", (record.error().message));
     return row;
   }
   const mysim::RunRecord& r = *record;
@@ -250,7 +246,7 @@ SweepRow runCase(const EngineRegistry& registry, const SweepSpec& spec, const Sw
     set("energy_rise", number(drift.max_rise));
   }
   if (!run->model.isCircle()) set("max_strain", number(maxStrainOverRun(run->model, r)));
-  set("note", sanitize([&] {
+  set("note", ([&] {
         std::string notes;
         for (const std::string& n : r.notes) notes += (notes.empty() ? "" : "; ") + n;
         return notes;
@@ -275,38 +271,37 @@ SweepRow runCase(const EngineRegistry& registry, const SweepSpec& spec, const Sw
   return row;
 }
 
-std::vector<std::string> splitCsvLine(const std::string& line) {
-  std::vector<std::string> fields;
-  std::stringstream in(line);
-  std::string field;
-  while (std::getline(in, field, ',')) fields.push_back(field);
-  if (!line.empty() && line.back() == ',') fields.push_back("");
-  return fields;
-}
-
-std::string joinRow(const SweepRow& row) {
-  std::string line;
-  for (std::size_t k = 0; k < row.size(); ++k) line += (k ? "," : "") + row[k];
-  return line;
-}
-
-std::string header() { return joinRow(sweepColumns()); }
+std::string header() { return csvLine(sweepColumns()); }
 
 std::expected<void, std::string> writeSorted(const std::string& path, std::vector<SweepRow> rows) {
   std::sort(rows.begin(), rows.end(),
             [](const SweepRow& a, const SweepRow& b) { return std::stoi(a[0]) < std::stoi(b[0]); });
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp);
+  return writeFileAtomically(path, [&](std::ostream& out) {
     out << header() << '\n';
-    for (const SweepRow& row : rows) out << joinRow(row) << '\n';
-    if (!out) return std::unexpected("cannot write " + tmp);
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) return std::unexpected("cannot rename " + tmp + ": " + ec.message());
-  return {};
+    for (const SweepRow& row : rows) out << csvLine(row) << '\n';
+  });
 }
+
+// Rows of a table or a journal: whole lines only (a last line without its line break was cut
+// short and is dropped, so its case runs again), with every column and a numeric case id.
+std::vector<SweepRow> readRows(std::istream& in) {
+  std::vector<SweepRow> rows;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (in.eof()) break;  // no line break after it: cut short
+    auto row = parseCsvLine(line);
+    if (!row || row->size() != sweepColumns().size()) continue;
+    if ((*row)[0].empty() || (*row)[0].find_first_not_of("0123456789") != std::string::npos) {
+      continue;
+    }
+    rows.push_back(std::move(*row));
+  }
+  return rows;
+}
+
+// The journal beside a table: rows appended the moment their case is done, so an interrupted
+// sweep loses only the runs in flight. The table itself is only ever replaced whole.
+std::string journalOf(const std::string& table) { return table + ".partial"; }
 
 }  // namespace
 
@@ -317,17 +312,7 @@ std::expected<std::vector<SweepRow>, std::string> readSweepTable(const std::stri
   if (!std::getline(in, line) || line != header()) {
     return std::unexpected(path + ": not a sweep table (header differs from: " + header() + ")");
   }
-  std::vector<SweepRow> rows;
-  int number_line = 1;
-  while (std::getline(in, line)) {
-    ++number_line;
-    if (line.empty()) continue;
-    SweepRow row = splitCsvLine(line);
-    // A row cut short by an interruption is dropped: its case runs again.
-    if (row.size() != sweepColumns().size()) continue;
-    rows.push_back(std::move(row));
-  }
-  return rows;
+  return readRows(in);
 }
 
 std::expected<int, std::string> runSweep(const EngineRegistry& registry, const SweepSpec& spec,
@@ -335,11 +320,22 @@ std::expected<int, std::string> runSweep(const EngineRegistry& registry, const S
                                          const SweepOptions& options) {
   std::vector<SweepRow> kept;
   std::set<int> done;
+  const std::string journal = journalOf(out_csv);
   if (options.resume && fs::exists(out_csv)) {
     auto existing = readSweepTable(out_csv);
     if (!existing) return std::unexpected(existing.error());
     kept = *existing;
-    for (const SweepRow& row : kept) done.insert(std::stoi(row[0]));
+  }
+  if (options.resume && fs::exists(journal)) {
+    std::ifstream in(journal);
+    for (SweepRow& row : readRows(in)) kept.push_back(std::move(row));
+  }
+  {
+    std::vector<SweepRow> unique;
+    for (SweepRow& row : kept) {
+      if (done.insert(std::stoi(row[0])).second) unique.push_back(std::move(row));
+    }
+    kept = std::move(unique);
   }
   std::vector<SweepCase> todo;
   for (const SweepCase& c : expandSweep(spec)) {
@@ -388,7 +384,8 @@ std::expected<int, std::string> runSweep(const EngineRegistry& registry, const S
     }
   }
 
-  std::ofstream out(out_csv, std::ios::app);
+  std::ofstream out(journal, std::ios::trunc);
+  if (!out) return std::unexpected("cannot write " + journal);
   std::mutex mutex;
   std::atomic<std::size_t> next{0};
   int finished = 0;
@@ -396,7 +393,7 @@ std::expected<int, std::string> runSweep(const EngineRegistry& registry, const S
     for (std::size_t k; (k = next++) < todo.size();) {
       SweepRow row = runCase(registry, spec, todo[k], references);
       std::lock_guard<std::mutex> lock(mutex);
-      out << joinRow(row) << '\n' << std::flush;
+      out << csvLine(row) << '\n' << std::flush;
       kept.push_back(std::move(row));
       ++finished;
       if (options.progress) options.progress(finished, static_cast<int>(todo.size()));
@@ -407,6 +404,8 @@ std::expected<int, std::string> runSweep(const EngineRegistry& registry, const S
   for (std::thread& t : threads) t.join();
   out.close();
   if (auto written = writeSorted(out_csv, kept); !written) return std::unexpected(written.error());
+  std::error_code ec;
+  fs::remove(journal, ec);
   return finished;
 }
 

@@ -8,14 +8,17 @@
 namespace springcheck {
 
 // Writes little-endian float64 data as a NumPy .npy file (format 1.0), which numpy.load reads
-// with no extra package. `shape` is C order; the product of its entries must be data.size().
-[[nodiscard]] bool writeNpy(const std::string& path, const std::vector<long>& shape,
-                            const std::vector<double>& data);
+// with no extra package, whole or not at all (writeFileAtomically). `shape` is C order; the
+// product of its entries must be data.size().
+[[nodiscard]] std::expected<void, std::string> writeNpy(const std::string& path,
+                                                        const std::vector<long>& shape,
+                                                        const std::vector<double>& data);
 
 // The same, with the data streamed by `write_data` (it must write exactly the shape's count of
 // float64 values), so a large trajectory is not copied into one buffer first.
-[[nodiscard]] bool writeNpy(const std::string& path, const std::vector<long>& shape,
-                            const std::function<void(std::ostream&)>& write_data);
+[[nodiscard]] std::expected<void, std::string> writeNpy(
+    const std::string& path, const std::vector<long>& shape,
+    const std::function<void(std::ostream&)>& write_data);
 
 // A float64 array read from a .npy file.
 struct NpyArray {

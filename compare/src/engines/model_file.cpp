@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "compare/external_engine.h"
+#include "compare/atomic_file.h"
 #include "compare/npy.h"
 #include "mysim/circle_system.h"
 #include "mysim/wind.h"
@@ -117,15 +118,13 @@ std::expected<void, std::string> writeModelFile(const std::string& dir, const my
         table[k * n + p] = model.pinned[p] ? 0.0 : mysim::windForce(w, p, t).dot(w.direction);
       }
     }
-    if (!writeNpy((fs::path(dir) / "wind.npy").string(), {windows, n}, table)) {
-      return std::unexpected(dir + "/wind.npy: cannot write");
+    if (auto written = writeNpy((fs::path(dir) / "wind.npy").string(), {windows, n}, table);
+        !written) {
+      return written;
     }
   }
-  std::ofstream out(fs::path(dir) / "model.json");
-  out << j.dump(1) << '\n';
-  out.close();
-  if (!out) return std::unexpected(dir + "/model.json: cannot write");
-  return {};
+  return writeFileAtomically((fs::path(dir) / "model.json").string(),
+                             [&](std::ostream& out) { out << j.dump(1) << '\n'; });
 }
 
 }  // namespace springcheck

@@ -1,0 +1,134 @@
+// Every input but scenes (tolerance files, sweep specs, engines files) through the one reader:
+// the cases that once crashed or were taken silently, each refused naming the file and field.
+// And the CSV every table is written and read with.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "compare/atomic_file.h"
+#include "compare/csv.h"
+#include "compare/sweep.h"
+#include "compare/tolerances.h"
+
+namespace springcheck {
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kRoot = SPRINGCHECK_SOURCE_DIR;
+
+class InputFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("springcheck_inputs_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string file(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name) << text;
+    return (dir_ / name).string();
+  }
+  // A sweep spec over the seed circle with `fields` spliced in.
+  std::string spec(const std::string& fields) {
+    return file("spec.json", R"({"scenes": [")" + kRoot + R"(/scenes/seed/circle.json"], )" +
+                                 fields + "}");
+  }
+  fs::path dir_;
+  EngineRegistry registry_;
+};
+
+void expectRefused(const std::expected<SweepSpec, std::string>& r, const std::string& source,
+                   const std::string& field) {
+  ASSERT_FALSE(r) << "accepted";
+  EXPECT_EQ(r.error().rfind(source + ": ", 0), 0u) << r.error();
+  EXPECT_NE(r.error().find(field), std::string::npos) << r.error();
+}
+
+TEST_F(InputFiles, SweepSpecFieldsOfTheWrongTypeAreRefusedNamingTheField) {
+  const std::string rest = R"("dt": [0.1], "reference": "closed_form")";
+  for (auto [fields, field] : std::vector<std::pair<std::string, std::string>>{
+           {R"("name": 5, )" + rest, "name: expected a string"},
+           {R"("name": null, )" + rest, "name: expected a string"},
+           {R"("dt": [0.1], "reference": {"integrator": 4})", "reference.integrator"},
+           {R"("dt": [0.1], "reference": {"integrator": "rk4", "refnie": 4})",
+            "reference.refnie: unknown field"},
+           {R"("dt": [1e400], "reference": "closed_form")", "dt[0]: expected a number within"},
+           {R"("dt": [0.5], "duration": 0.08, "reference": "closed_form")",
+            "dt[0]: a step no longer than the duration"},
+           {R"("dt": [0.1], "dt": [0.2], "reference": "closed_form")", "dt: given twice"},
+       }) {
+    const std::string path = spec(fields);
+    expectRefused(loadSweepSpec(path, registry_), path, field);
+  }
+}
+
+TEST_F(InputFiles, ADirectoryGivenAsAnyInputIsRefusedAsSuch) {
+  auto sweep = loadSweepSpec(dir_.string(), registry_);
+  ASSERT_FALSE(sweep);
+  EXPECT_NE(sweep.error().find("is a directory (expected a sweep spec)"), std::string::npos);
+  auto tolerances = loadTolerances(dir_.string(), registry_);
+  ASSERT_FALSE(tolerances);
+  EXPECT_NE(tolerances.error().find("is a directory"), std::string::npos);
+  auto engines = registry_.addEnginesFile(dir_.string());
+  ASSERT_FALSE(engines);
+  EXPECT_NE(engines.error().find("is a directory"), std::string::npos);
+}
+
+TEST_F(InputFiles, ToleranceBoundBeyondTheDoubleRangeIsRefusedNamingTheCheck) {
+  const std::string path = file("tol.json", R"({"scene_root": ")" + kRoot + R"(", "checks": [
+      {"scene": "scenes/seed/circle.json", "engines": ["mysim"], "metric": "closed_form_error",
+       "bound": 1e400, "why": "w"}]})");
+  auto t = loadTolerances(path, registry_);
+  ASSERT_FALSE(t);
+  EXPECT_NE(t.error().find(path + ": checks[0].bound: expected a number within the double range"),
+            std::string::npos)
+      << t.error();
+}
+
+TEST_F(InputFiles, EnginesFileTimeLimitBeyondTheDoubleRangeIsRefused) {
+  const std::string path =
+      file("e.json", R"({"engines": [{"name": "a", "command": ["x"], "time_limit": 1e999}]})");
+  auto added = registry_.addEnginesFile(path);
+  ASSERT_FALSE(added);
+  EXPECT_NE(added.error().find("engines[0].time_limit"), std::string::npos) << added.error();
+}
+
+TEST(Csv, FieldsWithCommasQuotesAndLineBreaksSurviveTheRoundTrip) {
+  const std::vector<std::string> fields = {"plain", "a,b", "say \"hi\"", "two\nlines", ""};
+  auto back = parseCsvLine(csvLine(fields));
+  ASSERT_TRUE(back);
+  ASSERT_EQ(back->size(), fields.size());
+  EXPECT_EQ((*back)[1], "a,b");
+  EXPECT_EQ((*back)[2], "say \"hi\"");
+  EXPECT_EQ((*back)[3], "two lines");  // one row stays one line
+  EXPECT_FALSE(parseCsvLine("1,\"cut sho"));  // a row cut inside a quoted field
+}
+
+TEST_F(InputFiles, ASweepOverAScenePathWithACommaResumesWithoutRerunning) {
+  fs::create_directories(dir_ / "a,b");
+  fs::copy_file(kRoot + "/scenes/seed/circle.json", dir_ / "a,b" / "circle.json");
+  const std::string path = file("spec.json", R"({"scenes": ["a,b/circle.json"],
+      "integrators": ["euler", "rk4"], "dt": [0.1], "duration": 1.0, "reference": "closed_form"})");
+  auto s = loadSweepSpec(path, registry_);
+  ASSERT_TRUE(s) << s.error();
+  const std::string table = (dir_ / "t.csv").string();
+  ASSERT_EQ(*runSweep(registry_, *s, table, {}), 2);
+  auto rows = readSweepTable(table);
+  ASSERT_TRUE(rows) << rows.error();
+  EXPECT_NE((*rows)[0][1].find("a,b/circle.json"), std::string::npos);
+  EXPECT_EQ(*runSweep(registry_, *s, table, {}), 0);  // both rows kept: nothing runs again
+}
+
+TEST_F(InputFiles, AnUnwritablePathIsAnErrorAndLeavesNothing) {
+  auto written = writeFileAtomically((dir_ / "no" / "such" / "f.txt").string(),
+                                     [](std::ostream& out) { out << "x"; });
+  ASSERT_FALSE(written);
+  EXPECT_NE(written.error().find("cannot write"), std::string::npos);
+  EXPECT_TRUE(fs::is_empty(dir_));
+}
+
+}  // namespace
+}  // namespace springcheck

@@ -160,9 +160,7 @@ std::expected<void, std::string> writeComparison(const std::string& dir, const C
     }
   }
   auto in = [&](const char* name) { return (fs::path(dir) / name).string(); };
-  // comparison.json last: a folder with one holds a whole comparison.
-  std::error_code ec;
-  fs::remove(in("comparison.json"), ec);
+  // Each file whole or not at all; comparison.json last, so it is never newer than the tables.
 
   auto done = writeFileAtomically(in("engine_metrics.csv"), [&](std::ostream& engines) {
     engines.precision(10);

@@ -318,32 +318,41 @@ std::expected<std::vector<SweepRow>, std::string> readSweepTable(const std::stri
 std::expected<int, std::string> runSweep(const EngineRegistry& registry, const SweepSpec& spec,
                                          const std::string& out_csv,
                                          const SweepOptions& options) {
-  std::vector<SweepRow> kept;
-  std::set<int> done;
+  // Rows so far: the table's, then the journal's (newer: a run interrupted after them), by id.
   const std::string journal = journalOf(out_csv);
+  std::map<int, SweepRow> by_id;
+  bool journal_rows = false;
   if (options.resume && fs::exists(out_csv)) {
     auto existing = readSweepTable(out_csv);
     if (!existing) return std::unexpected(existing.error());
-    kept = *existing;
+    for (SweepRow& row : *existing) by_id[std::stoi(row[0])] = std::move(row);
   }
   if (options.resume && fs::exists(journal)) {
     std::ifstream in(journal);
-    for (SweepRow& row : readRows(in)) kept.push_back(std::move(row));
-  }
-  {
-    std::vector<SweepRow> unique;
-    for (SweepRow& row : kept) {
-      if (done.insert(std::stoi(row[0])).second) unique.push_back(std::move(row));
+    for (SweepRow& row : readRows(in)) {
+      by_id[std::stoi(row[0])] = std::move(row);
+      journal_rows = true;
     }
-    kept = std::move(unique);
+  }
+  std::vector<SweepRow> kept;
+  std::set<int> done;
+  for (auto& [id, row] : by_id) {
+    done.insert(id);
+    kept.push_back(std::move(row));
   }
   std::vector<SweepCase> todo;
   for (const SweepCase& c : expandSweep(spec)) {
     if (c.id % options.shard_count != options.shard_index || done.count(c.id)) continue;
     todo.push_back(c);
   }
-  // Rows so far, then each new row appended the moment it is done.
-  if (auto written = writeSorted(out_csv, kept); !written) return std::unexpected(written.error());
+  // The journal's rows go into the table before the journal starts over, so none is lost; the
+  // table is otherwise left as it is until the sweep ends (a --fresh sweep that is interrupted
+  // leaves the previous table).
+  if (journal_rows) {
+    if (auto written = writeSorted(out_csv, kept); !written) {
+      return std::unexpected(written.error());
+    }
+  }
 
   // Converged references, one per (scene, stiffness), before the cases that need them.
   std::map<ReferenceKey, mysim::RunRecord> references;

@@ -79,17 +79,19 @@ std::expected<std::pair<const Engine*, RunConfig>, EngineError> EngineRegistry::
   const std::size_t colon = spec.find(':');
   const Engine* engine = find(spec.substr(0, colon));
   if (!engine) {
-    return unknown("unknown engine '" + spec + "'; expected one of " + engineList(*this) +
+    return unknown("unknown engine '" + mysim::clip(spec, 40) + "'; expected one of " +
+                   engineList(*this) +
                    (engines_files_.empty() ? " (a user's own engine comes from --engines-file)"
                                            : ""));
   }
   RunConfig resolved = config;
   if (colon != std::string::npos) {
     if (!engine->takes_integrator) {
-      return unknown("engine '" + spec + "': " + engine->name + " takes no integrator");
+      return unknown("engine '" + mysim::clip(spec, 40) + "': " + engine->name +
+                     " takes no integrator");
     }
     auto name = mysim::canonicalIntegratorName(spec.substr(colon + 1));
-    if (!name) return unknown("engine '" + spec + "': " + name.error());
+    if (!name) return unknown("engine '" + mysim::clip(spec, 40) + "': " + name.error());
     resolved.integrator.name = *name;
   }
   return std::pair{engine, std::move(resolved)};

@@ -121,6 +121,14 @@ SweepSpec readSpec(const json& j, const std::string& source, EngineRegistry& reg
 
 }  // namespace
 
+std::expected<SweepSpec, std::string> parseSweepSpec(const std::string& text,
+                                                     const std::string& source,
+                                                     EngineRegistry& registry) {
+  auto root = mysim::parseJson(text, source);
+  if (!root) return std::unexpected(root.error());
+  return mysim::readFields<SweepSpec>(source, [&] { return readSpec(*root, source, registry); });
+}
+
 std::expected<SweepSpec, std::string> loadSweepSpec(const std::string& path,
                                                     EngineRegistry& registry) {
   auto root = mysim::readJsonFile(path, "sweep spec");

@@ -32,7 +32,7 @@ ToleranceCheck readCheck(FieldReader& r, const fs::path& root, const EngineRegis
     std::string names;
     for (const MetricInfo& m : metricCatalog()) names += (names.empty() ? "" : ", ") + m.name;
     throw FieldError{r.field("metric"),
-                     "unknown metric '" + c.metric + "'; expected one of " + names};
+                     "unknown metric '" + mysim::clip(c.metric, 40) + "'; expected one of " + names};
   }
   if (c.engines.size() != (info->pair ? 2u : 1u)) {
     throw FieldError{r.field("engines"), "metric '" + c.metric + "' takes " +

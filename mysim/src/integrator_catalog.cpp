@@ -45,7 +45,7 @@ std::expected<std::string, std::string> canonicalIntegratorName(std::string_view
     valid += (valid.empty() ? "" : ", ") + info.name;
     if (!info.alias.empty()) valid += " (" + info.alias + ")";
   }
-  return std::unexpected("unknown integrator '" + std::string(name) + "'; expected one of " +
+  return std::unexpected("unknown integrator '" + clip(std::string(name), 40) + "'; expected one of " +
                          valid);
 }
 

@@ -28,7 +28,9 @@ class CheckedSax final : public json::json_sax_t {
   bool start_array(std::size_t) override { return open(json::array()); }
   bool key(string_t& k) override {
     json& object = *stack_.back().value;
-    if (object.contains(k)) return refuse(path(k), "given twice in one object (keys must be unique)");
+    if (object.contains(k)) {
+      return refuse(path(clip(k)), "given twice in one object (keys must be unique)");
+    }
     stack_.back().key = k;
     return true;
   }
@@ -63,7 +65,7 @@ class CheckedSax final : public json::json_sax_t {
       if (v.is_object()) {
         const std::string& key = k + 1 == stack_.size() && !last.empty() ? last : stack_[k].key;
         if (key.empty()) continue;
-        p += (p.empty() ? "" : ".") + key;
+        p += (p.empty() ? "" : ".") + clip(key, 60);
       } else {
         // The element being read: the last one placed while inside it, else the next.
         p += "[" + std::to_string(k + 1 < stack_.size() ? v.size() - 1 : v.size()) + "]";
@@ -121,7 +123,7 @@ std::expected<json, std::string> readJsonFile(const std::string& path, const std
   std::error_code ec;
   const auto status = fs::status(path, ec);
   if (ec || !fs::exists(status)) {
-    return std::unexpected(path + ": no such file (expected a " + what + ")");
+    return std::unexpected(clip(path, 200) + ": no such file (expected a " + what + ")");
   }
   if (fs::is_directory(status)) {
     return std::unexpected(path + ": is a directory (expected a " + what + ")");
@@ -154,7 +156,7 @@ FieldReader::FieldReader(const json& object, std::string path)
 }
 
 std::string FieldReader::field(const std::string& key) const {
-  return path_.empty() ? key : path_ + "." + key;
+  return path_.empty() ? clip(key, 60) : path_ + "." + clip(key, 60);
 }
 
 bool FieldReader::has(const std::string& key) {

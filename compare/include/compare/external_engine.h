@@ -25,6 +25,9 @@ struct ExternalEngineSpec {
 // that is not [a-z0-9._-]+, an unknown placeholder, a non-positive time limit.
 [[nodiscard]] std::expected<std::vector<ExternalEngineSpec>, std::string> loadEnginesFile(
     const std::string& path);
+// The same from text; `source` names it and its folder is {dir}.
+[[nodiscard]] std::expected<std::vector<ExternalEngineSpec>, std::string> parseEnginesFile(
+    const std::string& text, const std::string& source);
 
 // The frames a run is asked for: every `stride`-th step, and the last (as mysim::simulate
 // records them), or every step. Times are summed t += dt in double precision, as springcheck's

@@ -36,6 +36,10 @@ struct SweepSpec {
 // An `engines_file` the spec names (relative to the spec) is added to `registry`.
 [[nodiscard]] std::expected<SweepSpec, std::string> loadSweepSpec(const std::string& path,
                                                                   EngineRegistry& registry);
+// The same from text; `source` names it and places it (scene paths resolve against its folder).
+[[nodiscard]] std::expected<SweepSpec, std::string> parseSweepSpec(const std::string& text,
+                                                                   const std::string& source,
+                                                                   EngineRegistry& registry);
 
 // One run of the grid. `id` is its place in the full grid (stable across shards and resumes).
 struct SweepCase {

@@ -51,13 +51,13 @@ ExternalEngineSpec readEntry(mysim::FieldReader& r) {
 
 }  // namespace
 
-std::expected<std::vector<ExternalEngineSpec>, std::string> loadEnginesFile(
-    const std::string& path) {
-  auto root = mysim::readJsonFile(path, "engines file (docs/external-engines.md)");
-  if (!root) return std::unexpected(root.error());
+namespace {
+
+std::expected<std::vector<ExternalEngineSpec>, std::string> readEnginesFile(
+    const nlohmann::json& root, const std::string& path) {
   const std::string dir = fs::absolute(path).parent_path().lexically_normal().string();
   return mysim::readFields<std::vector<ExternalEngineSpec>>(path, [&] {
-    mysim::FieldReader top(*root, "");
+    mysim::FieldReader top(root, "");
     std::vector<ExternalEngineSpec> specs;
     std::set<std::string> names;
     top.objects("engines", [&](mysim::FieldReader& entry, std::size_t) {
@@ -72,6 +72,22 @@ std::expected<std::vector<ExternalEngineSpec>, std::string> loadEnginesFile(
     top.refuseUnknown(kSchema);
     return specs;
   });
+}
+
+}  // namespace
+
+std::expected<std::vector<ExternalEngineSpec>, std::string> loadEnginesFile(
+    const std::string& path) {
+  auto root = mysim::readJsonFile(path, "engines file (docs/external-engines.md)");
+  if (!root) return std::unexpected(root.error());
+  return readEnginesFile(*root, path);
+}
+
+std::expected<std::vector<ExternalEngineSpec>, std::string> parseEnginesFile(
+    const std::string& text, const std::string& source) {
+  auto root = mysim::parseJson(text, source);
+  if (!root) return std::unexpected(root.error());
+  return readEnginesFile(*root, source);
 }
 
 }  // namespace springcheck

@@ -9,6 +9,7 @@
 
 #include "compare/atomic_file.h"
 #include "compare/npy.h"
+#include "mysim/state_hash.h"
 #include "mysim/cloth_mesh.h"
 
 namespace springcheck {
@@ -49,6 +50,7 @@ json summaryJson(const mysim::Scene& scene, const mysim::RunRecord& r) {
             {"frames", r.frames.size()},
             {"complete", !r.blowup.has_value()},
             {"status", r.status()},
+            {"final_state_hash", r.frames.empty() ? "" : mysim::hashRows(r.frames.back())},
             {"notes", r.notes},
             {"peak_resident_bytes", peakResidentBytes()}};
   s["energy_start"] = r.energies.empty() ? json() : energyJson(r.energies.front());

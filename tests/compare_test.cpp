@@ -11,6 +11,7 @@
 #include "compare/run_metrics.h"
 #include "compare/sag_metric.h"
 #include "compare/settling_metric.h"
+#include "mysim/scene_file.h"
 #include "compare/surface_distance.h"
 #include "compare/tolerances.h"
 #include "mysim/cloth.h"
@@ -213,6 +214,46 @@ TEST(Gate, AnEngineThatRefusesTheSceneFailsItsCheck) {
   const GateReport report = runGate(registry, *tolerances);
   EXPECT_FALSE(report.passed());
   EXPECT_NE(report.results[0].problem.find("refused"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace springcheck
+
+namespace springcheck {
+namespace {
+
+mysim::Scene chainScene(const std::string& integrator_fields) {
+  auto scene = mysim::parseScene(
+      R"({"system": {"type": "chain", "particles": 4, "rest_length": 0.1, "particle_mass": 0.01,
+          "stiffness": 100}, "forces": {"gravity": [0, -9.8, 0]},
+          "integrator": {"dt": 0.01, "duration": 0.2, )" + integrator_fields + "}}",
+      "status.json");
+  EXPECT_TRUE(scene) << scene.error();
+  return *scene;
+}
+
+// dopri5 asked for 1e-30 (tighter than double precision) once ran forever; it must stop at its
+// step limits and say so.
+TEST(RunStatus, AnUnreachableAdaptiveToleranceStopsTheRunAsAStepLimit) {
+  const auto run = EngineRegistry().run(
+      "mysim", chainScene(R"("name": "dopri5", "abs_tolerance": 1e-30, "rel_tolerance": 1e-30)"));
+  ASSERT_TRUE(run) << run.error().message;
+  EXPECT_EQ(run->status(), "step-limit");
+  ASSERT_TRUE(run->blowup);
+  EXPECT_LT(run->blowup->time, 0.2);
+}
+
+// A CG that cannot converge in one iteration finishes the run but says the run is less accurate
+// than asked, instead of only counting it.
+TEST(RunStatus, LinearSolvesThatStopShortAreAStatusNotJustACount) {
+  const auto run = EngineRegistry().run(
+      "mysim", chainScene(R"("name": "backward-euler", "cg_max_iterations": 1, "cg_tolerance": 1e-12)"));
+  ASSERT_TRUE(run) << run.error().message;
+  EXPECT_FALSE(run->blowup);
+  EXPECT_GT(run->counts.solver_failures, 0);
+  EXPECT_EQ(run->status(), "solver-not-converged");
+  const auto fine = EngineRegistry().run("mysim", chainScene(R"("name": "backward-euler")"));
+  EXPECT_EQ(fine->status(), "ok");
 }
 
 }  // namespace

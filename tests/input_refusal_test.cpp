@@ -132,3 +132,27 @@ TEST_F(InputFiles, AnUnwritablePathIsAnErrorAndLeavesNothing) {
 
 }  // namespace
 }  // namespace springcheck
+
+namespace springcheck {
+namespace {
+
+// A row cut short (no line break after it: the writer was killed mid-line) is not taken as done,
+// even when it has every column.
+TEST(SweepTable, ALastLineWithoutItsLineBreakIsDroppedAsCutShort) {
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("springcheck_cut_" + std::to_string(::getpid()) + ".csv");
+  SweepRow row(sweepColumns().size(), "1");
+  row[0] = "0";
+  SweepRow cut = row;
+  cut[0] = "1";
+  cut.back() = "note cut her";
+  std::ofstream(path) << csvLine(sweepColumns()) << '\n' << csvLine(row) << '\n' << csvLine(cut);
+  auto rows = readSweepTable(path.string());
+  ASSERT_TRUE(rows) << rows.error();
+  ASSERT_EQ(rows->size(), 1u);
+  EXPECT_EQ((*rows)[0][0], "0");
+  std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace springcheck

@@ -141,6 +141,7 @@ std::expected<json, std::string> readJsonFile(const std::string& path, const std
 std::string describeJson(const json& value) {
   if (value.is_array()) return "array of " + std::to_string(value.size());
   if (value.is_object()) return "object of " + std::to_string(value.size()) + " keys";
+  if (value.is_null()) return "null";
   std::string text = value.dump();
   if (text.size() > 40) text = text.substr(0, 37) + "...";
   return std::string(value.type_name()) + " " + text;

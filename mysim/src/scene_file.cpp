@@ -326,30 +326,30 @@ std::string stem(const std::string& path) {
   return name.substr(0, 100);
 }
 
-}  // namespace
-
-std::expected<Scene, std::string> parseScene(const std::string& text, const std::string& source,
-                                             const std::vector<EngineSection>& sections) {
-  auto root = parseJson(text, source);
-  if (!root) return std::unexpected(root.error());
+std::expected<Scene, std::string> sceneFrom(const nlohmann::json& root, const std::string& source,
+                                            const std::vector<EngineSection>& sections) {
   return readFields<Scene>(source, [&] {
-    Scene scene = readScene(*root, sections);
+    Scene scene = readScene(root, sections);
     scene.source = source;
     if (scene.name.empty()) scene.name = stem(source);
     return scene;
   });
 }
 
+}  // namespace
+
+std::expected<Scene, std::string> parseScene(const std::string& text, const std::string& source,
+                                             const std::vector<EngineSection>& sections) {
+  auto root = parseJson(text, source);
+  if (!root) return std::unexpected(root.error());
+  return sceneFrom(*root, source, sections);
+}
+
 std::expected<Scene, std::string> loadScene(const std::string& path,
                                             const std::vector<EngineSection>& sections) {
   auto root = readJsonFile(path, "scene file");
   if (!root) return std::unexpected(root.error());
-  return readFields<Scene>(path, [&] {
-    Scene scene = readScene(*root, sections);
-    scene.source = path;
-    if (scene.name.empty()) scene.name = stem(path);
-    return scene;
-  });
+  return sceneFrom(*root, path, sections);
 }
 
 }  // namespace mysim

@@ -161,6 +161,9 @@ INSTANTIATE_TEST_SUITE_P(
                               json{{"strength", 1}, {"gust", 2}});
                 },
                 "forces.wind.gust", "[0, 1]"},
+        BadCase{"NullWhereANumberBelongs",
+                [] { return with(validCloth(), "/system/width"_json_pointer, nullptr); },
+                "system.width", "expected a number, got null"},
         BadCase{"NameLeavesTheOutputFolder",
                 [] { return with(validCloth(), "/name"_json_pointer, "../../x"); },
                 "name", "letters, digits"},

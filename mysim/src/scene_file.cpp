@@ -291,6 +291,7 @@ Scene readScene(const json& root, const std::vector<EngineSection>& sections) {
     FieldReader r = top.object("blowup");
     scene.limits.max_strain = r.positive("max_strain", scene.limits.max_strain);
     scene.limits.max_energy_ratio = r.positive("max_energy_ratio", scene.limits.max_energy_ratio);
+    scene.limits.max_energy_rise = r.positive("max_energy_rise", scene.limits.max_energy_rise);
     r.refuseUnknown("docs/scenes.md");
   }
   for (const EngineSection& section : sections) {

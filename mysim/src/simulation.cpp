@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 namespace mysim {
 std::string RunRecord::status() const {
@@ -17,13 +18,17 @@ long stepCount(const RunSettings& settings) {
 
 namespace {
 
-void recordFrame(OdeSystem& system, const State& state, double external_work, RunRecord& record) {
+void recordFrame(OdeSystem& system, const State& state, const std::optional<EnergyTerms>& energy,
+                 RunRecord& record) {
   record.times.push_back(state.t);
   record.frames.push_back(system.particleRows(state));
-  if (auto e = system.energy(state)) {
-    e->external_work = external_work;
-    record.energies.push_back(*e);
-  }
+  if (energy) record.energies.push_back(*energy);
+}
+
+std::optional<EnergyTerms> energyOf(OdeSystem& system, const State& state, double external_work) {
+  auto e = system.energy(state);
+  if (e) e->external_work = external_work;
+  return e;
 }
 
 }  // namespace
@@ -47,7 +52,11 @@ RunRecord simulate(OdeSystem& system, Stepper& stepper, State state, const RunSe
   const bool driven = system.hasExternalDriver();
   State before;
   double external_work = 0.0;
-  recordFrame(system, state, external_work, record);
+  // Bounded instability: checked at the sampled frames, where the energy is computed anyway.
+  const std::optional<double> rise_limit = system.energyRiseLimit();
+  double lowest = std::numeric_limits<double>::infinity();
+  recordFrame(system, state, energyOf(system, state, 0.0), record);
+  if (!record.energies.empty()) lowest = record.energies.back().total();
 
   Clock::duration stepping{};
   for (long step = 1; step <= steps; ++step) {
@@ -68,7 +77,23 @@ RunRecord simulate(OdeSystem& system, Stepper& stepper, State state, const RunSe
       record.blowup = BlowUp{state.t, step, bad->check, bad->detail};
       break;
     }
-    if (step % stride == 0 || step == steps) recordFrame(system, state, external_work, record);
+    if (step % stride == 0 || step == steps) {
+      const std::optional<EnergyTerms> e = energyOf(system, state, external_work);
+      if (rise_limit && e) {
+        const double rise = e->total() - lowest;
+        if (rise > *rise_limit) {
+          record.blowup = BlowUp{state.t, step, "energy-rise",
+                                 "total energy " + std::to_string(rise) +
+                                     " J above its lowest earlier value, more than " +
+                                     std::to_string(*rise_limit) +
+                                     " J (blowup.max_energy_rise of the energy scale): a "
+                                     "passive scene cannot gain energy"};
+          break;
+        }
+        lowest = std::min(lowest, e->total());
+      }
+      recordFrame(system, state, e, record);
+    }
   }
   record.wall_seconds = std::chrono::duration<double>(stepping).count();
   return record;

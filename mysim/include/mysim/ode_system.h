@@ -39,6 +39,10 @@ class OdeSystem {
   };
   virtual std::optional<Unhealthy> checkHealth(const State& state) const = 0;
 
+  // How far, in J, the total energy of a passive system may rise above its lowest earlier value
+  // before the run counts as unstable; none for systems without energy or with external drivers.
+  virtual std::optional<double> energyRiseLimit() const { return std::nullopt; }
+
   // Energy terms where the system has them.
   virtual std::optional<EnergyTerms> energy(const State& state) const = 0;
 

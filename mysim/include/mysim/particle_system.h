@@ -24,6 +24,10 @@ class ParticleSystem final : public OdeSystem {
   std::optional<Unhealthy> checkHealth(const State& state) const override;
   std::optional<EnergyTerms> energy(const State& state) const override;
   bool hasExternalDriver() const override { return model_.wind || model_.pin_motion; }
+  std::optional<double> energyRiseLimit() const override {
+    if (hasExternalDriver()) return std::nullopt;
+    return limits_.max_energy_rise * energy_scale_;
+  }
   // Wind: its force is constant within a gust window, so over a step inside one window the work
   // is exactly F . (x_after - x_before) (evaluated at the step's midpoint time). Moving pins:
   // the trapezoidal rule on their power -sum F_springs_on_pin . v_pin.

@@ -1,6 +1,7 @@
 // Engines files: the user's own simulators, declared as commands.
 #include <filesystem>
-#include <regex>
+#include <algorithm>
+#include <cctype>
 #include <set>
 
 #include "compare/external_engine.h"
@@ -19,11 +20,21 @@ const std::set<std::string>& placeholders() {
 
 constexpr const char* kSchema = "docs/external-engines.md";
 
+// [a-z0-9][a-z0-9._-]*, at most 64 characters: it names folders and table columns.
+bool isEngineName(const std::string& name) {
+  if (name.empty() || name.size() > 64 || !std::isalnum(static_cast<unsigned char>(name[0]))) {
+    return false;
+  }
+  return std::all_of(name.begin(), name.end(), [](unsigned char c) {
+    return (std::isdigit(c) || (c >= 'a' && c <= 'z') || c == '.' || c == '_' || c == '-');
+  });
+}
+
 ExternalEngineSpec readEntry(mysim::FieldReader& r) {
   using mysim::FieldError;
   ExternalEngineSpec spec;
   spec.name = r.text("name");
-  if (!std::regex_match(spec.name, std::regex("[a-z0-9][a-z0-9._-]{0,63}"))) {
+  if (!isEngineName(spec.name)) {
     throw FieldError{r.field("name"),
                      "'" + spec.name.substr(0, 64) +
                          "': expected lower-case letters, digits, '.', '_' or '-' (at most 64, no "
@@ -33,13 +44,15 @@ ExternalEngineSpec readEntry(mysim::FieldReader& r) {
   spec.command = r.textList("command");
   for (std::size_t k = 0; k < spec.command.size(); ++k) {
     const std::string& text = spec.command[k];
-    static const std::regex placeholder("\\{([^}]*)\\}");
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), placeholder);
-         it != std::sregex_iterator(); ++it) {
-      if (!placeholders().count((*it)[1])) {
+    for (std::size_t open = text.find('{'); open != std::string::npos;
+         open = text.find('{', open + 1)) {
+      const std::size_t close = text.find('}', open);
+      if (close == std::string::npos) break;  // a lone brace is the program's business
+      const std::string name = text.substr(open + 1, close - open - 1);
+      if (!placeholders().count(name)) {
         throw FieldError{r.field("command") + "[" + std::to_string(k) + "]",
-                         "unknown placeholder " + it->str() +
-                             " (known: {model} {out} {dir} {python} {dt} {duration} {integrator} "
+                         "unknown placeholder {" + mysim::clip(name, 40) +
+                             "} (known: {model} {out} {dir} {python} {dt} {duration} {integrator} "
                              "{scene})"};
       }
     }

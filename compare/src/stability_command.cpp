@@ -50,7 +50,8 @@ void parallelFor(int n, int jobs, const std::function<void(int)>& f) {
 }
 
 // Very long runs, very small masses, a very large cloth: what happens at the extremes.
-std::expected<void, std::string> writeExtremes(const std::string& path, int jobs) {
+std::expected<void, std::string> writeExtremes(const EngineRegistry& registry,
+                                               const std::string& path, int jobs) {
   std::ostringstream out;
   out.precision(8);
   out << "case,integrator,quantity,value,unit\n";
@@ -65,7 +66,7 @@ std::expected<void, std::string> writeExtremes(const std::string& path, int jobs
     s.dt = 0.01;
     s.duration = 1e6 * s.dt;
     s.sample_interval = s.duration / 1000;
-    auto r = EngineRegistry().run("mysim", s);
+    auto r = registry.run("mysim", s);
     const EnergyDrift d = energyDrift(r->energies);
     std::ostringstream row;
     row.precision(8);
@@ -96,7 +97,7 @@ std::expected<void, std::string> writeExtremes(const std::string& path, int jobs
     s.dt = dt;
     s.duration = steps * dt;
     s.sample_interval = s.duration;
-    auto r = EngineRegistry().run("mysim", s);
+    auto r = registry.run("mysim", s);
     out << "cloth 256 x 256," << integrator << ",time per step," << r->wall_seconds / r->steps
         << ",s\n"
         << "cloth 256 x 256," << integrator << ",stable," << (r->blowup ? 0 : 1) << ",1/0\n";
@@ -188,7 +189,7 @@ int stability(const StabilityOptions& o) {
     return kFailure;
   }
   if (o.extremes) {
-    if (auto written = writeExtremes(o.out + "/extremes.csv", jobs); !written) {
+    if (auto written = writeExtremes(registry, o.out + "/extremes.csv", jobs); !written) {
       std::cerr << "error: " << written.error() << '\n';
       return kFailure;
     }

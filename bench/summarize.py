@@ -13,7 +13,9 @@ def main(bench_json, memory_json, baseline_json, out_csv):
         if b.get("aggregate_name", "median") != "median":
             continue
         name = b["run_name"] if "run_name" in b else b["name"]
-        runs[name.replace("/real_time", "").replace("/iterations:20", "")] = b
+        for suffix in ("/real_time", "/manual_time", "/iterations:20", "/iterations:3"):
+            name = name.replace(suffix, "")
+        runs[name] = b
     rows = []
 
     def add(what, value, unit, goal=""):
@@ -62,6 +64,13 @@ def main(bench_json, memory_json, baseline_json, out_csv):
     t1 = runs["BM_Rk4Threads/256/1"]["real_time"]
     t2 = runs["BM_Rk4Threads/256/2"]["real_time"]
     add("RK4 step 256x256: 1 thread over 2", t1 / t2, "x", "goal >= 1.6: " + ("met" if t1 / t2 >= 1.6 else "missed"))
+    load = {c: runs[f"BM_ClothRk4UnderLoad/64/{c}"]["real_time"] for c in
+            ("idle_one_thread", "idle_all_threads", "loaded_follow_load", "loaded_fixed_all_threads")}
+    for case, t in load.items():
+        add(f"RK4 run 64x64 (0.2 s), {case.replace('_', ' ')}", t, "ms")
+    ratio = load["loaded_follow_load"] / load["idle_one_thread"]
+    add("RK4 64x64 with one busy process / idle one thread", ratio, "x",
+        "goal <= 1.3: " + ("met" if ratio <= 1.3 else "missed"))
     mem = json.load(open(memory_json))
     base = json.load(open(baseline_json))
     total = mem["peak_resident_bytes"] / mem["particles"]

@@ -22,6 +22,29 @@ std::optional<EngineRegistry> makeRegistry(const std::vector<std::string>& files
   return registry;
 }
 
+void addTimingOptions(CLI::App* command, TimingOptions& timing, int default_repeats) {
+  timing.repeats = default_repeats;
+  command
+      ->add_option("--repeats", timing.repeats,
+                   "Time every run this many times; wall times are the fastest (the median is "
+                   "kept beside it)")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  command
+      ->add_option("--threads", timing.threads,
+                   "OpenMP threads per mysim run (default: every core, or OMP_NUM_THREADS)")
+      ->check(CLI::Range(1, 1024));
+  command->add_flag("--fixed-threads", timing.fixed_threads,
+                    "Keep the thread count even when other processes hold cores (by default a "
+                    "run steps on the cores the rest of the machine leaves free)");
+}
+
+void applyTiming(const TimingOptions& timing, RunConfig& config) {
+  config.repeats = timing.repeats;
+  config.run.threads = timing.threads;
+  config.run.follow_load = !timing.fixed_threads;
+}
+
 int exitCodeForStatus(const std::string& status) {
   if (status == "ok") return kOk;
   if (status == "blowup") return kBlowUp;

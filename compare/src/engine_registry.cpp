@@ -1,5 +1,7 @@
 #include "compare/engine_registry.h"
 
+#include <algorithm>
+
 #include "engines/engines.h"
 #include "mysim/run_limits.h"
 #include "mysim/scene_file.h"
@@ -132,18 +134,40 @@ std::expected<mysim::RunRecord, EngineError> EngineRegistry::run(const std::stri
   if (!resolved) return std::unexpected(resolved.error());
   if (auto limit = limitError(model, config)) return std::unexpected(*limit);
   const auto& [engine, resolved_config] = *resolved;
-  std::expected<mysim::RunRecord, EngineError> record;
-  if (engine->run) {
-    record = engine->run(model, resolved_config);
-  } else {
+  auto once = [&]() -> std::expected<mysim::RunRecord, EngineError> {
+    if (engine->run) return engine->run(model, resolved_config);
     auto instance = engine->build(model, resolved_config);
     if (!instance) return std::unexpected(instance.error());
-    record = mysim::simulate(*instance->system, *instance->stepper, instance->start,
-                             resolved_config.run);
-    record->integrator = instance->integrator;
-    record->notes = instance->notes;
+    mysim::RunRecord r = mysim::simulate(*instance->system, *instance->stepper, instance->start,
+                                         resolved_config.run);
+    r.integrator = instance->integrator;
+    r.notes = instance->notes;
+    return r;
+  };
+  auto record = once();
+  if (!record) return record;
+  record->engine = spec;
+  // Repeats time the same run again; a run that differs from the first (it must not) fails.
+  std::vector<double> walls{record->wall_seconds};
+  for (int k = 1; k < config.repeats; ++k) {
+    auto again = once();
+    if (!again) return std::unexpected(again.error());
+    if (again->steps != record->steps || again->frames.size() != record->frames.size() ||
+        (!again->frames.empty() && again->frames.back() != record->frames.back())) {
+      return std::unexpected(EngineError{
+          EngineError::Kind::Failed,
+          spec + ": repeat " + std::to_string(k + 1) + " of the run gave another result than the "
+                 "first: the engine is not deterministic, so its timing cannot be repeated"});
+    }
+    walls.push_back(again->wall_seconds);
+    record->threads = std::max(record->threads, again->threads);
   }
-  if (record) record->engine = spec;
+  std::sort(walls.begin(), walls.end());
+  record->repeats = static_cast<int>(walls.size());
+  record->wall_seconds = walls.front();
+  const std::size_t half = walls.size() / 2;
+  record->wall_median_seconds =
+      walls.size() % 2 ? walls[half] : 0.5 * (walls[half - 1] + walls[half]);
   return record;
 }
 

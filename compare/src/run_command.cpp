@@ -16,6 +16,7 @@ struct RunOptions {
   int classic_iterations = 0;
   std::string out;
   std::vector<std::string> engines_files;
+  TimingOptions timing;
 };
 
 int runScene(const RunOptions& o) {
@@ -40,7 +41,9 @@ int runScene(const RunOptions& o) {
   if (o.classic_iterations > 0) {
     scene->engine_settings["bullet"]["classic_iterations"] = o.classic_iterations;
   }
-  auto record = registry->run(o.engine, *scene);
+  RunConfig config = runConfig(*scene);
+  applyTiming(o.timing, config);
+  auto record = registry->run(o.engine, mysim::buildModel(*scene), config);
   if (!record) {
     const bool overridden = o.dt > 0 || o.duration > 0;
     std::cerr << "error: " << record.error().message
@@ -57,7 +60,9 @@ int runScene(const RunOptions& o) {
   }
   std::cout << scene->name << " [" << o.engine << ", " << record->integrator << ", dt "
             << record->dt << " s]: " << record->steps << " steps in " << record->wall_seconds
-            << " s -> " << dir << '\n';
+            << " s (" << record->threads << " thread" << (record->threads > 1 ? "s" : "")
+            << ", fastest of " << record->repeats << "; " << record->realtimeFactor()
+            << "x realtime) -> " << dir << '\n';
   if (record->blowup) {
     std::cerr << record->status() << ": t = " << record->blowup->time << " s (step "
               << record->blowup->step << "), " << record->blowup->check << ": "
@@ -87,6 +92,7 @@ void addRunCommand(CLI::App& app, int& exit_code) {
                   "bullet-classic solver passes per step (overrides bullet.classic_iterations)")
       ->check(CLI::Range(1, 10000));
   run->add_option("--out", options->out, "Output directory (default out/SCENE/ENGINE)");
+  addTimingOptions(run, options->timing, 1);
   run->callback([options, &exit_code] { exit_code = runScene(*options); });
 }
 

@@ -5,11 +5,18 @@
 #include <cmath>
 #include <limits>
 
+#include "mysim/thread_budget.h"
+
 namespace mysim {
 std::string RunRecord::status() const {
   if (blowup) return blowup->check == "step-limit" ? "step-limit" : "blowup";
   if (counts.solver_failures > 0) return "solver-not-converged";
   return "ok";
+}
+
+double RunRecord::realtimeFactor() const {
+  const double simulated = times.empty() ? 0.0 : times.back() - times.front();
+  return wall_seconds > 0.0 ? simulated / wall_seconds : 0.0;
 }
 
 long stepCount(const RunSettings& settings) {
@@ -58,8 +65,10 @@ RunRecord simulate(OdeSystem& system, Stepper& stepper, State state, const RunSe
   recordFrame(system, state, energyOf(system, state, 0.0), record);
   if (!record.energies.empty()) lowest = record.energies.back().total();
 
+  ThreadBudget budget(settings.threads, settings.follow_load);
   Clock::duration stepping{};
   for (long step = 1; step <= steps; ++step) {
+    budget.update();
     if (driven) before = state;
     const auto start = Clock::now();
     record.counts += stepper.step(state, settings.dt);
@@ -96,6 +105,8 @@ RunRecord simulate(OdeSystem& system, Stepper& stepper, State state, const RunSe
     }
   }
   record.wall_seconds = std::chrono::duration<double>(stepping).count();
+  record.wall_median_seconds = record.wall_seconds;
+  record.threads = budget.mostThreads();
   return record;
 }
 

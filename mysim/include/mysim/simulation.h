@@ -22,6 +22,9 @@ struct RunRecord {
   long steps = 0;         // scene steps taken
   StepCounts counts;
   double wall_seconds = 0.0;          // stepping alone: no set-up, sampling or output
+  double wall_median_seconds = 0.0;   // over `repeats` identical runs (wall_seconds: the fastest)
+  int repeats = 1;
+  int threads = 1;                    // the most OpenMP threads the run stepped with
   std::vector<double> times;          // (F) s
   std::vector<ParticleRows> frames;   // (F) sampled states, finite only
   std::vector<EnergyTerms> energies;  // (F) where the system has energy
@@ -32,12 +35,18 @@ struct RunRecord {
   // unable to meet its tolerance); "solver-not-converged" (the run is complete, but some linear
   // solves stopped short of their tolerance: less accurate than asked).
   std::string status() const;
+  // Simulated seconds per wall second of stepping (0 when nothing was timed).
+  double realtimeFactor() const;
 };
 
 struct RunSettings {
   double dt = 0.01;
   double duration = 1.0;
   double sample_interval = 0.0;  // 0: about 200 frames
+  // OpenMP threads: 0 for every core the process may use. With follow_load the run uses only
+  // the cores other processes leave free (mysim/thread_budget.h); results are the same either way.
+  int threads = 0;
+  bool follow_load = true;
 };
 
 // Frames are taken every this many steps.

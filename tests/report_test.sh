@@ -8,7 +8,7 @@ rm -rf "$OUT"
 mkdir -p "$OUT/sweep"
 cd "$SRC"
 $B gate --tolerances tests/data/report_tolerances.json --json "$OUT/gate.json" >/dev/null
-$B sweep tests/data/report_sweep.json --out "$OUT/sweep/small_convergence.csv" --jobs 2 >/dev/null 2>&1
+$B sweep tests/data/report_sweep.json --out "$OUT/sweep/small_convergence.csv" --jobs 2 --repeats 1 >/dev/null 2>&1
 $B stability --integrators rk4,verlet,backward-euler --stiffness 10,100 --masses 1 \
   --out "$OUT/stability" --extremes --jobs 2 >/dev/null 2>&1
 for scene in chain_swing chain_hanging; do

@@ -41,10 +41,17 @@ class SmallSweep : public ::testing::Test {
     return *rows;
   }
 
-  // Every column but the wall time: what a rerun must reproduce.
-  static SweepRow withoutTiming(SweepRow row) {
+  static std::size_t column(const std::string& name) {
     const auto& cols = sweepColumns();
-    row[std::find(cols.begin(), cols.end(), "wall_seconds") - cols.begin()] = "";
+    return static_cast<std::size_t>(std::find(cols.begin(), cols.end(), name) - cols.begin());
+  }
+
+  // Every column but the timing and its conditions: what a rerun must reproduce.
+  static SweepRow withoutTiming(SweepRow row) {
+    for (const char* name : {"wall_seconds", "wall_median_seconds", "realtime_factor", "threads",
+                             "jobs", "load_average"}) {
+      row[column(name)] = "";
+    }
     return row;
   }
 
@@ -61,8 +68,8 @@ TEST_F(SmallSweep, TableHasOneRowPerCaseWithEveryColumn) {
     EXPECT_EQ(rows[k][0], std::to_string(k));  // sorted by case id
     EXPECT_EQ(rows[k][6], "ok");
   }
-  // Columns: error is column 16. RK4 beats Euler at every step; both errors shrink with dt.
-  auto error = [&](int id) { return std::stod(rows[id][16]); };
+  // RK4 beats Euler at every step; both errors shrink with dt.
+  auto error = [&](int id) { return std::stod(rows[id][column("error")]); };
   for (int k = 0; k < 3; ++k) EXPECT_LT(error(3 + k), error(k));
   EXPECT_LT(error(1), error(0));
   EXPECT_LT(error(5), error(4));
@@ -156,6 +163,24 @@ TEST(StabilityLimit, BackwardEulerIsStableAtTheLargestStepTried) {
        {std::tuple{1e3, 0.01, 0.0}, {10.0, 1.0, 0.05}, {100.0, 0.01, 0.05}, {100.0, 1.0, 0.05}}) {
     const StabilityLimit l = oscillatorStability(EngineRegistry(), "backward-euler", k, m, zeta, {});
     EXPECT_EQ(l.status, "stable-at-max") << k << " " << m;  // h w = 100
+  }
+}
+
+TEST_F(SmallSweep, TimingRoundsRecordFastestOfRepeatsAndTheirConditions) {
+  const auto rows = run("timed.csv", {.jobs = 2, .repeats = 3}, 6);
+  ASSERT_EQ(rows.size(), 6u);
+  for (const SweepRow& row : rows) {
+    EXPECT_EQ(row[column("repeats")], "3");
+    EXPECT_EQ(row[column("jobs")], "1");  // timed one case at a time
+    const double fastest = std::stod(row[column("wall_seconds")]);
+    const double median = std::stod(row[column("wall_median_seconds")]);
+    EXPECT_GT(fastest, 0.0);
+    EXPECT_LE(fastest, median);
+    // Realtime factor: simulated seconds (steps x dt) per wall second of the fastest run.
+    const double simulated = std::stod(row[column("steps")]) * std::stod(row[column("dt")]);
+    EXPECT_NEAR(std::stod(row[column("realtime_factor")]) * fastest, simulated, 1e-6 * simulated);
+    EXPECT_GE(std::stoi(row[column("threads")]), 1);
+    EXPECT_FALSE(row[column("load_average")].empty());
   }
 }
 

@@ -33,14 +33,8 @@ std::optional<EngineRegistry> makeRegistry(const std::vector<std::string>& files
 // The exit code for an engine that did not run.
 int exitCodeFor(const EngineError& error);
 
-// How runs are timed (docs/timing.md): --repeats, --threads, --fixed-threads.
-struct TimingOptions {
-  int repeats = 1;
-  int threads = 0;  // 0: every core, fewer while other processes hold some
-  bool fixed_threads = false;
-};
-void addTimingOptions(CLI::App* command, TimingOptions& timing, int default_repeats);
-void applyTiming(const TimingOptions& timing, RunConfig& config);
+// --repeats, --threads, --fixed-threads (docs/timing.md).
+void addTimingOptions(CLI::App* command, Timing& timing, int default_repeats);
 
 // A flag value that must be a number > 0 (CLI11's PositiveNumber prints its whole double range).
 inline const CLI::Validator kPositive(

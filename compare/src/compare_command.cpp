@@ -13,6 +13,7 @@ struct CompareOptions {
   std::string engines;  // empty: every engine of the registry
   std::string out;
   std::vector<std::string> engines_files;
+  Timing timing;
 };
 
 std::vector<std::string> splitList(const std::string& text) {
@@ -34,7 +35,7 @@ int compare(const CompareOptions& o) {
   }
   const std::vector<std::string> engines =
       o.engines.empty() ? registry->names() : splitList(o.engines);
-  auto comparison = compareScene(*registry, *scene, engines);
+  auto comparison = compareScene(*registry, *scene, engines, o.timing);
   if (!comparison) {
     std::cerr << "error: " << comparison.error() << '\n';
     return kBadInput;
@@ -66,6 +67,7 @@ void addCompareCommand(CLI::App& app, int& exit_code) {
                   "Comma-separated engines (default: every engine, your own included)");
   addEnginesFileOption(cmd, o->engines_files);
   cmd->add_option("--out", o->out, "Output directory (default out/compare/SCENE)");
+  addTimingOptions(cmd, o->timing, 1);
   cmd->callback([o, &exit_code] { exit_code = compare(*o); });
 }
 

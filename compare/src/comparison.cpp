@@ -15,14 +15,16 @@ namespace springcheck {
 
 std::expected<Comparison, std::string> compareScene(const EngineRegistry& registry,
                                                     const mysim::Scene& scene,
-                                                    const std::vector<std::string>& engines) {
+                                                    const std::vector<std::string>& engines,
+                                                    const Timing& timing) {
   Comparison c;
   c.scene = scene;
   c.model = mysim::buildModel(scene);
   for (const std::string& engine : engines) {
     if (auto known = registry.check(engine); !known) return std::unexpected(known.error());
   }
-  const RunConfig config = runConfig(scene);
+  RunConfig config = runConfig(scene);
+  applyTiming(timing, config);
   for (const std::string& engine : engines) {
     auto record = registry.run(engine, c.model, config);
     if (!record) {
@@ -116,6 +118,10 @@ json metricsJson(const EngineMetrics& m) {
   json j = {{"engine", m.engine},
             {"steps", m.steps},
             {"wall_seconds", m.wall_seconds},
+            {"wall_median_seconds", m.wall_median_seconds},
+            {"realtime_factor", m.realtime_factor},
+            {"repeats", m.repeats},
+            {"threads", m.threads},
             {"external_work", m.external_work},
             {"energy_reference", m.drift.reference}};
   for (const MetricInfo& info : metricCatalog()) {
@@ -168,7 +174,7 @@ std::expected<void, std::string> writeComparison(const std::string& dir, const C
     for (const MetricInfo& info : metricCatalog()) {
       if (!info.pair) engines << ',' << info.name;
     }
-    engines << ",wall_seconds,steps,status\n";
+    engines << ",wall_seconds,wall_median_seconds,realtime_factor,repeats,threads,steps,status\n";
     for (const EngineMetrics& m : c.engines) {
       engines << csvField(m.engine);
       for (const MetricInfo& info : metricCatalog()) {
@@ -177,7 +183,9 @@ std::expected<void, std::string> writeComparison(const std::string& dir, const C
         engines << ',';
         if (v) engines << *v;
       }
-      engines << ',' << m.wall_seconds << ',' << m.steps << ',' << m.status << '\n';
+      engines << ',' << m.wall_seconds << ',' << m.wall_median_seconds << ','
+              << m.realtime_factor << ',' << m.repeats << ',' << m.threads << ',' << m.steps
+              << ',' << m.status << '\n';
     }
   });
   if (!done) return done;

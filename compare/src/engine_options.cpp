@@ -22,7 +22,7 @@ std::optional<EngineRegistry> makeRegistry(const std::vector<std::string>& files
   return registry;
 }
 
-void addTimingOptions(CLI::App* command, TimingOptions& timing, int default_repeats) {
+void addTimingOptions(CLI::App* command, Timing& timing, int default_repeats) {
   timing.repeats = default_repeats;
   command
       ->add_option("--repeats", timing.repeats,
@@ -37,12 +37,6 @@ void addTimingOptions(CLI::App* command, TimingOptions& timing, int default_repe
   command->add_flag("--fixed-threads", timing.fixed_threads,
                     "Keep the thread count even when other processes hold cores (by default a "
                     "run steps on the cores the rest of the machine leaves free)");
-}
-
-void applyTiming(const TimingOptions& timing, RunConfig& config) {
-  config.repeats = timing.repeats;
-  config.run.threads = timing.threads;
-  config.run.follow_load = !timing.fixed_threads;
 }
 
 int exitCodeForStatus(const std::string& status) {

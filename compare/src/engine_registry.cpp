@@ -127,6 +127,12 @@ std::expected<EngineInstance, EngineError> EngineRegistry::build(const std::stri
   return resolved->first->build(model, resolved->second);
 }
 
+void applyTiming(const Timing& timing, RunConfig& config) {
+  config.repeats = timing.repeats;
+  config.run.threads = timing.threads;
+  config.run.follow_load = !timing.fixed_threads;
+}
+
 std::expected<mysim::RunRecord, EngineError> EngineRegistry::run(const std::string& spec,
                                                                  const mysim::Model& model,
                                                                  const RunConfig& config) const {
@@ -162,13 +168,17 @@ std::expected<mysim::RunRecord, EngineError> EngineRegistry::run(const std::stri
     walls.push_back(again->wall_seconds);
     record->threads = std::max(record->threads, again->threads);
   }
-  std::sort(walls.begin(), walls.end());
-  record->repeats = static_cast<int>(walls.size());
-  record->wall_seconds = walls.front();
-  const std::size_t half = walls.size() / 2;
-  record->wall_median_seconds =
-      walls.size() % 2 ? walls[half] : 0.5 * (walls[half - 1] + walls[half]);
+  setRepeatTimes(*record, std::move(walls));
   return record;
+}
+
+void setRepeatTimes(mysim::RunRecord& record, std::vector<double> walls) {
+  std::sort(walls.begin(), walls.end());
+  record.repeats = static_cast<int>(walls.size());
+  record.wall_seconds = walls.front();
+  const std::size_t half = walls.size() / 2;
+  record.wall_median_seconds =
+      walls.size() % 2 ? walls[half] : 0.5 * (walls[half - 1] + walls[half]);
 }
 
 std::expected<mysim::RunRecord, EngineError> EngineRegistry::run(const std::string& spec,

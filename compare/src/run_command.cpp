@@ -16,7 +16,7 @@ struct RunOptions {
   int classic_iterations = 0;
   std::string out;
   std::vector<std::string> engines_files;
-  TimingOptions timing;
+  Timing timing;
 };
 
 int runScene(const RunOptions& o) {

@@ -19,6 +19,10 @@ EngineMetrics engineMetrics(const mysim::Scene& scene, const mysim::Model& model
   m.status = r.status();
   m.blowup_time = r.blowup ? r.blowup->time : 0.0;
   m.wall_seconds = r.wall_seconds;
+  m.wall_median_seconds = r.wall_median_seconds;
+  m.realtime_factor = r.realtimeFactor();
+  m.repeats = r.repeats;
+  m.threads = r.threads;
   m.steps = r.steps;
   m.closed_form = closedFormError(model, r);
   m.drift = energyDrift(r.energies);

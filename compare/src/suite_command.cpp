@@ -14,6 +14,7 @@ struct SuiteOptions {
   std::string dir = "scenes";
   std::string out = "out/suite";
   std::vector<std::string> engines_files;
+  Timing timing;
   std::string tolerances;  // also gate the runs against this file
 };
 
@@ -47,7 +48,7 @@ int runSuite(const SuiteOptions& o) {
       code = kBadInput;
       continue;
     }
-    auto comparison = compareScene(*registry, *scene, registry->names());
+    auto comparison = compareScene(*registry, *scene, registry->names(), o.timing);
     if (!comparison) {
       std::cerr << "error: " << comparison.error() << '\n';
       code = kBadInput;
@@ -85,6 +86,7 @@ void addSuiteCommand(CLI::App& app, int& exit_code) {
   suite->add_option("dir", options->dir, "Scene directory")->capture_default_str();
   suite->add_option("--out", options->out, "Output root")->capture_default_str();
   addEnginesFileOption(suite, options->engines_files);
+  addTimingOptions(suite, options->timing, 1);
   suite->add_option("--tolerances", options->tolerances,
                     "Then check these bounds against the runs (a tolerances file, which may "
                     "name its own engines_file); the exit code says whether they held");

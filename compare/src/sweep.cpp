@@ -19,6 +19,7 @@
 #include "compare/energy_metric.h"
 #include "compare/settling_metric.h"
 #include "mysim/json_input.h"
+#include "mysim/thread_budget.h"
 
 namespace springcheck {
 namespace {
@@ -182,6 +183,12 @@ const std::vector<std::string>& sweepColumns() {
                                                    "blowup_time",
                                                    "blowup_check",
                                                    "wall_seconds",
+                                                   "wall_median_seconds",
+                                                   "realtime_factor",
+                                                   "repeats",
+                                                   "threads",
+                                                   "jobs",
+                                                   "load_average",
                                                    "steps",
                                                    "derivative_evaluations",
                                                    "accepted_steps",
@@ -215,8 +222,17 @@ std::pair<double, double> trajectoryError(const mysim::RunRecord& run,
   return {worst, last};
 }
 
+// The machine's 1-minute load average (0 where there is no /proc/loadavg).
+double loadAverage() {
+  std::ifstream in("/proc/loadavg");
+  double load = 0.0;
+  in >> load;
+  return load;
+}
+
 SweepRow runCase(const EngineRegistry& registry, const SweepSpec& spec, const SweepCase& c,
-                 const std::map<ReferenceKey, mysim::RunRecord>& references) {
+                 const std::map<ReferenceKey, mysim::RunRecord>& references,
+                 const SweepOptions& options) {
   SweepRow row = {std::to_string(c.id), c.scene,      c.engine,
                   c.integrator,         number(c.dt), number(c.stiffness_scale)};
   row.resize(sweepColumns().size());
@@ -230,6 +246,12 @@ SweepRow runCase(const EngineRegistry& registry, const SweepSpec& spec, const Sw
     set("note", (run.error()));
     return row;
   }
+  // The first round: `jobs` cases at a time, each on its share of the cores.
+  run->config.run.threads = std::max(1, mysim::availableCores() / std::max(1, options.jobs));
+  run->config.run.follow_load = !options.fixed_threads;
+  set("repeats", "1");  // the timing rounds replace this
+  set("jobs", std::to_string(options.jobs));
+  set("load_average", number(loadAverage()));
   auto record = registry.run(c.engine, run->model, run->config);
   if (!record) {
     set("status", record.error().kind == EngineError::Kind::Failed ? "failed" : "refused");
@@ -243,6 +265,9 @@ SweepRow runCase(const EngineRegistry& registry, const SweepSpec& spec, const Sw
     set("blowup_check", r.blowup->check);
   }
   set("wall_seconds", number(r.wall_seconds));
+  set("wall_median_seconds", number(r.wall_median_seconds));
+  set("realtime_factor", number(r.realtimeFactor()));
+  set("threads", std::to_string(r.threads));
   set("steps", std::to_string(r.steps));
   set("derivative_evaluations", std::to_string(r.counts.derivative_evaluations));
   set("accepted_steps", std::to_string(r.counts.accepted));
@@ -280,6 +305,63 @@ SweepRow runCase(const EngineRegistry& registry, const SweepSpec& spec, const Sw
 }
 
 std::string header() { return csvLine(sweepColumns()); }
+
+std::size_t columnIndex(const std::string& name) {
+  const auto& cols = sweepColumns();
+  return static_cast<std::size_t>(std::find(cols.begin(), cols.end(), name) - cols.begin());
+}
+
+void retimeRows(const EngineRegistry& registry, const SweepSpec& spec,
+                const std::vector<SweepCase>& cases, const SweepOptions& options,
+                std::vector<SweepRow>& rows) {
+  // With jobs == 1 the first round was timed alone: it is one of the repeats.
+  const bool first_round_counts = options.jobs <= 1;
+  const int rounds = first_round_counts ? options.repeats - 1 : options.repeats;
+  if (options.repeats <= 1) return;
+  std::map<int, SweepRow*> row_of;
+  for (SweepRow& row : rows) row_of[std::stoi(row[0])] = &row;
+  std::vector<const SweepCase*> timed;  // the cases that ran (a refusal has no time)
+  for (const SweepCase& c : cases) {
+    if (!row_of[c.id]->at(columnIndex("wall_seconds")).empty()) timed.push_back(&c);
+  }
+  std::vector<std::vector<double>> walls(timed.size());
+  std::vector<int> threads(timed.size(), 1);
+  for (std::size_t k = 0; first_round_counts && k < timed.size(); ++k) {
+    walls[k].push_back(std::stod(row_of[timed[k]->id]->at(columnIndex("wall_seconds"))));
+    threads[k] = std::stoi(row_of[timed[k]->id]->at(columnIndex("threads")));
+  }
+  const int total = rounds * static_cast<int>(timed.size());
+  for (int round = 0; round < rounds; ++round) {
+    for (std::size_t k = 0; k < timed.size(); ++k) {
+      auto run = caseRun(spec, *timed[k]);
+      if (!run) continue;
+      run->config.run.threads = options.threads;
+      run->config.run.follow_load = !options.fixed_threads;
+      auto record = registry.run(timed[k]->engine, run->model, run->config);
+      if (record) {
+        walls[k].push_back(record->wall_seconds);
+        threads[k] = std::max(threads[k], record->threads);
+      }
+      if (options.timing_progress) {
+        options.timing_progress(round * static_cast<int>(timed.size()) + static_cast<int>(k) + 1,
+                                total);
+      }
+    }
+  }
+  for (std::size_t k = 0; k < timed.size(); ++k) {
+    if (walls[k].empty()) continue;  // no timing run succeeded: the first round's time stays
+    SweepRow& row = *row_of[timed[k]->id];
+    mysim::RunRecord times;
+    times.times = {0.0, std::stod(row[columnIndex("steps")]) * timed[k]->dt};
+    setRepeatTimes(times, walls[k]);
+    row[columnIndex("wall_seconds")] = number(times.wall_seconds);
+    row[columnIndex("wall_median_seconds")] = number(times.wall_median_seconds);
+    row[columnIndex("realtime_factor")] = number(times.realtimeFactor());
+    row[columnIndex("repeats")] = std::to_string(times.repeats);
+    row[columnIndex("threads")] = std::to_string(threads[k]);
+    row[columnIndex("jobs")] = "1";  // timed one at a time
+  }
+}
 
 std::expected<void, std::string> writeSorted(const std::string& path, std::vector<SweepRow> rows) {
   std::sort(rows.begin(), rows.end(),
@@ -408,7 +490,7 @@ std::expected<int, std::string> runSweep(const EngineRegistry& registry, const S
   int finished = 0;
   auto work = [&] {
     for (std::size_t k; (k = next++) < todo.size();) {
-      SweepRow row = runCase(registry, spec, todo[k], references);
+      SweepRow row = runCase(registry, spec, todo[k], references, options);
       std::lock_guard<std::mutex> lock(mutex);
       out << csvLine(row) << '\n' << std::flush;
       kept.push_back(std::move(row));
@@ -420,6 +502,10 @@ std::expected<int, std::string> runSweep(const EngineRegistry& registry, const S
   for (int t = 0; t < std::max(1, options.jobs); ++t) threads.emplace_back(work);
   for (std::thread& t : threads) t.join();
   out.close();
+  // Timing rounds: every case of this sweep again, `repeats - 1` more times, round after round
+  // rather than back to back, so a slow spell of the machine (seconds long on a shared VM) costs
+  // one sample of many cases instead of every sample of one.
+  retimeRows(registry, spec, todo, options, kept);
   if (auto written = writeSorted(out_csv, kept); !written) return std::unexpected(written.error());
   std::error_code ec;
   fs::remove(journal, ec);

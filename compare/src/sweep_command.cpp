@@ -9,6 +9,7 @@
 #include "commands.h"
 #include "compare/progress.h"
 #include "compare/sweep.h"
+#include "mysim/thread_budget.h"
 
 namespace springcheck {
 namespace {
@@ -20,6 +21,7 @@ struct SweepCommandOptions {
   std::string shard = "0/1";
   bool fresh = false;
   std::vector<std::string> engines_files;
+  Timing timing;
 };
 
 int sweep(const SweepCommandOptions& o) {
@@ -32,7 +34,7 @@ int sweep(const SweepCommandOptions& o) {
   }
   SweepOptions options;
   options.jobs =
-      o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+      o.jobs > 0 ? o.jobs : mysim::availableCores();
   if (std::sscanf(o.shard.c_str(), "%d/%d", &options.shard_index, &options.shard_count) != 2 ||
       options.shard_count < 1 || options.shard_index < 0 ||
       options.shard_index >= options.shard_count) {
@@ -40,8 +42,13 @@ int sweep(const SweepCommandOptions& o) {
     return kBadInput;
   }
   options.resume = !o.fresh;
+  options.repeats = o.timing.repeats;
+  options.fixed_threads = o.timing.fixed_threads;
+  options.threads = o.timing.threads;
   auto progress = std::make_shared<Progress>("sweep " + spec->name, isatty(STDERR_FILENO));
   options.progress = [progress](int done, int total) { progress->update(done, total); };
+  auto timing = std::make_shared<Progress>("sweep " + spec->name + " timing", isatty(STDERR_FILENO));
+  options.timing_progress = [timing](int done, int total) { timing->update(done, total); };
   const std::string out = o.out.empty() ? "out/sweep/" + spec->name + ".csv" : o.out;
   std::error_code ec;
   std::filesystem::create_directories(std::filesystem::path(out).parent_path(), ec);
@@ -52,7 +59,8 @@ int sweep(const SweepCommandOptions& o) {
     return kFailure;
   }
   std::cout << "sweep " << spec->name << ": " << *ran << " runs now (shard " << o.shard << " of "
-            << total << " cases, " << options.jobs << " jobs) -> " << out << '\n';
+            << total << " cases, " << options.jobs << " jobs; timed alone, fastest of " << options.repeats
+            << " rounds) -> " << out << '\n';
   return kOk;
 }
 
@@ -68,6 +76,7 @@ void addSweepCommands(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   cmd->add_flag("--fresh", o->fresh, "Start over instead of resuming an existing table");
   addEnginesFileOption(cmd, o->engines_files);
+  addTimingOptions(cmd, o->timing, 3);
   cmd->callback([o, &exit_code] { exit_code = sweep(*o); });
 
   auto inputs = std::make_shared<std::vector<std::string>>();

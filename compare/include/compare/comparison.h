@@ -29,7 +29,7 @@ struct Comparison {
 // `failed`, not an error. Fails only when an engine name is unknown.
 [[nodiscard]] std::expected<Comparison, std::string> compareScene(
     const EngineRegistry& registry, const mysim::Scene& scene,
-    const std::vector<std::string>& engines);
+    const std::vector<std::string>& engines, const Timing& timing = {});
 
 void printComparison(std::ostream& out, const Comparison& c);
 

@@ -30,6 +30,15 @@ struct RunConfig {
 };
 RunConfig runConfig(const mysim::Scene& scene);
 
+// How runs are timed (docs/timing.md): repeats, and OpenMP threads per mysim run (0: every core,
+// fewer while other processes hold some, unless fixed_threads).
+struct Timing {
+  int repeats = 1;
+  int threads = 0;
+  bool fixed_threads = false;
+};
+void applyTiming(const Timing& timing, RunConfig& config);
+
 // An engine set up on a model, ready to step (the viewer steps it; runs go through simulate).
 struct EngineInstance {
   // Judges every engine alike: health checks, energy and output rows are mysim's, computed from
@@ -108,6 +117,9 @@ class EngineRegistry {
   std::vector<mysim::EngineSection> sections_;
   std::vector<std::string> engines_files_;
 };
+
+// The wall times of identical runs into `record`: the fastest, the median and their count.
+void setRepeatTimes(mysim::RunRecord& record, std::vector<double> walls);
 
 // "a, b, c": the registered names, for help texts and messages.
 std::string engineList(const EngineRegistry& registry);

@@ -26,7 +26,11 @@ struct EngineMetrics {
   bool blew_up = false;  // the run stopped early (a blow-up or an adaptive step limit)
   std::string status;    // RunRecord::status()
   double blowup_time = 0.0;
-  double wall_seconds = 0.0;
+  double wall_seconds = 0.0;  // the fastest of `repeats` runs; threads: the most it used
+  double wall_median_seconds = 0.0;
+  double realtime_factor = 0.0;  // simulated s per wall s
+  int repeats = 1;
+  int threads = 1;
   long steps = 0;
   double sag_lowest = 0.0;                // m below the pins, last frame
   std::optional<double> sag_free_middle;  // m, last frame

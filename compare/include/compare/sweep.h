@@ -69,10 +69,19 @@ using SweepRow = std::vector<std::string>;  // values in sweepColumns() order
 
 struct SweepOptions {
   int jobs = 1;
+  // Timing (docs/timing.md). The cases run `jobs` at a time for their results; with repeats > 1
+  // they are then timed one at a time (cases run side by side slow each other down through the
+  // caches and memory they share: up to 1.8x on a 2-core VM), in `repeats` rounds over all cases
+  // rather than back to back, on `threads` OpenMP threads (0: every core), following the load
+  // unless fixed_threads. Wall time: the fastest of the rounds.
+  int repeats = 1;
+  int threads = 0;
+  bool fixed_threads = false;
   int shard_index = 0;  // run cases with id % shard_count == shard_index
   int shard_count = 1;
   bool resume = true;  // keep rows already in the output file and skip their cases
   std::function<void(int done, int total)> progress = nullptr;
+  std::function<void(int done, int total)> timing_progress = nullptr;  // the timing rounds
 };
 
 // Runs the (remaining) cases of the spec in parallel, appending each finished row to `out_csv`

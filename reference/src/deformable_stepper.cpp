@@ -20,9 +20,42 @@
 namespace reference {
 namespace {
 
+// Counts what Bullet's Krylov solver does, which Bullet does not report: it wraps the
+// preconditioner, which the solver applies once per iteration plus a fixed number of times per
+// solve (CG, the projected implicit solve: 2; conjugate residual, the explicit one: 1, see
+// btConjugateGradient.h and btConjugateResidual.h).
+class CountingPreconditioner final : public Preconditioner {
+ public:
+  CountingPreconditioner(Preconditioner* inner, long applications_so_far)
+      : applications(applications_so_far), inner_(inner) {}
+  void operator()(const TVStack& x, TVStack& b) override {
+    ++applications;
+    (*inner_)(x, b);
+  }
+  void reinitialize(bool node_updated) override { inner_->reinitialize(node_updated); }
+  long applications = 0;
+
+ private:
+  Preconditioner* inner_;
+};
+
 // m_cg and the Newton settings are protected: a subclass is the only way to set them.
 class TunedDeformableSolver final : public btDeformableBodySolver {
  public:
+  // Krylov iterations so far: preconditioner applications less the fixed ones of each solve.
+  long iterations() const { return counter_ ? counter_->applications - fixed_ * solves_ : 0; }
+  void countIterations(bool implicit) { fixed_ = implicit ? 2 : 1; }
+  void solveDeformableConstraints(btScalar solverdt) override {
+    // Bullet sets its preconditioner again as it sets up a step: wrap whichever it now uses.
+    if (m_objective->m_preconditioner != counter_.get()) {
+      counter_ = std::make_unique<CountingPreconditioner>(m_objective->m_preconditioner,
+                                                          counter_ ? counter_->applications : 0);
+      m_objective->m_preconditioner = counter_.get();
+    }
+    ++solves_;  // one Newton iteration: one linear solve
+    btDeformableBodySolver::solveDeformableConstraints(solverdt);
+  }
+
   void tune(double cg_tolerance, int cg_max_iterations, int newton_iterations) {
     // Bullet's CG stops at r.z <= tol * min(1, r0.z): a squared, preconditioned residual. Our
     // cg_tolerance bounds |r| / |b|, so the matching Bullet tolerance is its square.
@@ -30,6 +63,11 @@ class TunedDeformableSolver final : public btDeformableBodySolver {
     m_cg.m_maxIterations = cg_max_iterations;
     m_maxNewtonIterations = newton_iterations;
   }
+
+ private:
+  std::unique_ptr<CountingPreconditioner> counter_;
+  long fixed_ = 2;
+  long solves_ = 0;
 };
 
 class DeformableStepper final : public BulletStepper {
@@ -107,6 +145,7 @@ class DeformableStepper final : public BulletStepper {
     world_->setUseProjection(implicit);  // implicit without projection does not move at all
     // One Newton step: Baraff-Witkin's linearised backward Euler, as mysim's backward-euler.
     solver_->tune(settings.cg_tolerance, settings.cg_max_iterations, 1);
+    solver_->countIterations(implicit);
   }
 
   ~DeformableStepper() override {
@@ -116,8 +155,9 @@ class DeformableStepper final : public BulletStepper {
 
   mysim::StepCounts step(mysim::State& state, double h) override {
     time_ = state.t;
+    const long before = solver_->iterations();
     stepWorld(*world_, *body_, model_, state, h);
-    return {.accepted = 1};
+    return {.accepted = 1, .linear_iterations = solver_->iterations() - before};
   }
 
   const btSoftBody& body() const override { return *body_; }

@@ -29,6 +29,7 @@ EngineMetrics engineMetrics(const mysim::Scene& scene, const mysim::Model& model
   m.external_work = model.wind.has_value() || model.pin_motion.has_value();
   if (scene.kind == mysim::SystemKind::Circle) return m;
 
+
   const SagSeries sag = sagOverTime(model, r);
   m.sag_lowest = sag.lowest.back();
   if (!sag.free_middle.empty()) m.sag_free_middle = sag.free_middle.back();
@@ -41,6 +42,7 @@ EngineMetrics engineMetrics(const mysim::Scene& scene, const mysim::Model& model
   }
   m.settling_time = settlingTime(r);
   m.max_strain = maxStrainOverRun(model, r);
+  m.momentum = momentumDrift(model, r);
   return m;
 }
 
@@ -70,20 +72,25 @@ PairMetrics pairMetrics(const mysim::Scene& scene, const mysim::Model& model, co
     m.sag_difference = std::abs(sagOverTime(model, a.record).lowest.back() -
                                 sagOverTime(model, b.record).lowest.back());
   }
-  const auto& ta = a.record.times;
-  const auto& tb = b.record.times;
-  if (ta.size() == tb.size() &&
-      std::equal(ta.begin(), ta.end(), tb.begin(),
-                 [](double x, double y) { return std::abs(x - y) < 1e-9; })) {
-    double worst = 0.0;
-    for (std::size_t f = 0; f < ta.size(); ++f) {
-      worst = std::max(
-          worst,
-          nodeDistance(a.record.frames[f].leftCols<3>(), b.record.frames[f].leftCols<3>()).rms);
-    }
-    m.trajectory_rms_max = worst;
-  }
+  if (auto d = trajectoryDistance(a.record, b.record)) m.trajectory_rms_max = d->max_rms;
   return m;
+}
+
+std::optional<TrajectoryDistance> trajectoryDistance(const mysim::RunRecord& a,
+                                                     const mysim::RunRecord& b) {
+  const auto& ta = a.times;
+  const auto& tb = b.times;
+  if (ta.empty() || ta.size() != tb.size() ||
+      !std::equal(ta.begin(), ta.end(), tb.begin(),
+                  [](double x, double y) { return std::abs(x - y) < 1e-9; })) {
+    return std::nullopt;
+  }
+  TrajectoryDistance d;
+  for (std::size_t f = 0; f < ta.size(); ++f) {
+    d.last_rms = nodeDistance(a.frames[f].leftCols<3>(), b.frames[f].leftCols<3>()).rms;
+    d.max_rms = std::max(d.max_rms, d.last_rms);
+  }
+  return d;
 }
 
 const std::vector<MetricInfo>& metricCatalog() {
@@ -98,6 +105,10 @@ const std::vector<MetricInfo>& metricCatalog() {
       {"energy_rise", false, "J", "largest rise of total energy above an earlier low"},
       {"settling_time", false, "s", "time after which KE stays below 1e-4 of its peak"},
       {"max_strain", false, "rel", "largest |l / rest - 1| of any spring, any frame"},
+      {"linear_momentum_drift", false, "rel",
+       "max |P(t) - P(0) - M g t| / max sum m|v| (free bodies only)"},
+      {"angular_momentum_drift", false, "rel",
+       "max |L(t) - L(0)| about the centre of mass / its scale (free bodies only)"},
       {"drape_rms", true, "m", "RMS per-node distance of the final shapes"},
       {"drape_max", true, "m", "max per-node distance of the final shapes"},
       {"chamfer", true, "m", "symmetric Chamfer distance of the final surfaces"},
@@ -128,6 +139,12 @@ std::optional<double> metricValue(const EngineMetrics& m, std::string_view name)
   if (name == "energy_rise") return m.drift.max_rise;
   if (name == "settling_time") return m.settling_time;
   if (name == "max_strain") return m.max_strain;
+  if (name == "linear_momentum_drift") {
+    return m.momentum ? std::optional(m.momentum->linear) : std::nullopt;
+  }
+  if (name == "angular_momentum_drift") {
+    return m.momentum ? std::optional(m.momentum->angular) : std::nullopt;
+  }
   return std::nullopt;
 }
 

@@ -15,9 +15,7 @@
 #include "compare/atomic_file.h"
 #include "compare/closed_form.h"
 #include "compare/csv.h"
-#include "compare/drape_metric.h"
-#include "compare/energy_metric.h"
-#include "compare/settling_metric.h"
+#include "compare/run_metrics.h"
 #include "mysim/json_input.h"
 #include "mysim/thread_budget.h"
 
@@ -200,6 +198,8 @@ const std::vector<std::string>& sweepColumns() {
                                                    "energy_drift_max",
                                                    "energy_rise",
                                                    "max_strain",
+                                                   "linear_momentum_drift",
+                                                   "angular_momentum_drift",
                                                    "note"};
   return columns;
 }
@@ -209,18 +209,6 @@ namespace {
 constexpr int kParameterColumns = 6;  // case_id .. stiffness_scale
 
 using ReferenceKey = std::pair<std::string, double>;  // scene, stiffness scale
-
-// Max over frames and last-frame RMS node distance between a run and its reference.
-std::pair<double, double> trajectoryError(const mysim::RunRecord& run,
-                                          const mysim::RunRecord& ref) {
-  double worst = 0.0, last = 0.0;
-  const std::size_t frames = std::min(run.frames.size(), ref.frames.size());
-  for (std::size_t f = 0; f < frames; ++f) {
-    last = nodeDistance(run.frames[f].leftCols<3>(), ref.frames[f].leftCols<3>()).rms;
-    worst = std::max(worst, last);
-  }
-  return {worst, last};
-}
 
 // The machine's 1-minute load average (0 where there is no /proc/loadavg).
 double loadAverage() {
@@ -273,12 +261,18 @@ SweepRow runCase(const EngineRegistry& registry, const SweepSpec& spec, const Sw
   set("accepted_steps", std::to_string(r.counts.accepted));
   set("rejected_steps", std::to_string(r.counts.rejected));
   set("linear_iterations", std::to_string(r.counts.linear_iterations));
+  // The metrics of compare and the gate, computed where they are defined (run_metrics.h).
+  const EngineMetrics metrics = engineMetrics(run->scene, run->model, {c.engine, r});
+  auto setMetric = [&](const std::string& column, const char* metric) {
+    if (auto v = metricValue(metrics, metric)) set(column, number(*v));
+  };
   if (!r.energies.empty()) {
-    const EnergyDrift drift = energyDrift(r.energies);
-    set("energy_drift_max", number(drift.max_abs_total));
-    set("energy_rise", number(drift.max_rise));
+    setMetric("energy_drift_max", "energy_drift_max");
+    setMetric("energy_rise", "energy_rise");
   }
-  if (!run->model.isCircle()) set("max_strain", number(maxStrainOverRun(run->model, r)));
+  if (!run->model.isCircle()) setMetric("max_strain", "max_strain");
+  setMetric("linear_momentum_drift", "linear_momentum_drift");
+  setMetric("angular_momentum_drift", "angular_momentum_drift");
   set("note", ([&] {
         std::string notes;
         for (const std::string& n : r.notes) notes += (notes.empty() ? "" : "; ") + n;
@@ -286,7 +280,7 @@ SweepRow runCase(const EngineRegistry& registry, const SweepSpec& spec, const Sw
       }()));
   if (r.blowup) return row;  // errors of a blown-up run mean nothing
   if (spec.reference_closed_form) {
-    if (auto cf = closedFormError(run->model, r)) {
+    if (const auto& cf = metrics.closed_form) {
       set("reference", "closed_form: " + cf->quantity);
       set("error", number(cf->error));
       set("final_error", number(cf->error));
@@ -294,11 +288,12 @@ SweepRow runCase(const EngineRegistry& registry, const SweepSpec& spec, const Sw
   } else {
     const auto it = references.find({c.scene, c.stiffness_scale});
     if (it != references.end()) {
-      const auto [worst, last] = trajectoryError(r, it->second);
-      set("reference",
-          spec.reference_integrator + " at dt/" + std::to_string(spec.reference_refine));
-      set("error", number(worst));
-      set("final_error", number(last));
+      if (auto d = trajectoryDistance(r, it->second)) {
+        set("reference",
+            spec.reference_integrator + " at dt/" + std::to_string(spec.reference_refine));
+        set("error", number(d->max_rms));
+        set("final_error", number(d->last_rms));
+      }
     }
   }
   return row;

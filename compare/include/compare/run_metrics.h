@@ -7,6 +7,7 @@
 #include "compare/closed_form.h"
 #include "compare/drape_metric.h"
 #include "compare/energy_metric.h"
+#include "compare/momentum_metric.h"
 #include "compare/surface_distance.h"
 #include "mysim/scene.h"
 #include "mysim/simulation.h"
@@ -42,6 +43,7 @@ struct EngineMetrics {
   bool external_work = false;           // wind or driven pins: energy may rise on purpose
   std::optional<double> settling_time;  // s
   double max_strain = 0.0;
+  std::optional<MomentumDrift> momentum;  // where the model conserves momentum
 };
 
 // How far two engines' runs of the same scene are apart.
@@ -53,6 +55,15 @@ struct PairMetrics {
   // Max over frames of the per-frame RMS node distance; only when both sampled the same times.
   std::optional<double> trajectory_rms_max;
 };
+
+// Max over frames and last frame of the RMS node distance between two runs sampled at the same
+// times (nothing when their frame times differ).
+struct TrajectoryDistance {
+  double max_rms = 0.0;
+  double last_rms = 0.0;
+};
+std::optional<TrajectoryDistance> trajectoryDistance(const mysim::RunRecord& a,
+                                                     const mysim::RunRecord& b);
 
 EngineMetrics engineMetrics(const mysim::Scene& scene, const mysim::Model& model,
                             const EngineRun& run);

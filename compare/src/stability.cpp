@@ -5,6 +5,7 @@
 #include <functional>
 #include <limits>
 
+#include "compare/natural_frequency.h"
 
 namespace springcheck {
 
@@ -37,9 +38,17 @@ std::optional<double> theoryStableStep(const std::string& integrator, double sti
 
 namespace {
 
-// Bisection in log h between a stable and an unstable step.
-StabilityLimit bisect(const std::function<bool(double)>& stable, double h_min, double h_max,
-                      double precision) {
+// Bisection in log h between a stable and an unstable step. `stable` may say why a step is not.
+StabilityLimit bisect(const std::function<bool(double, std::string&)>& stable_because,
+                      double h_min, double h_max, double precision) {
+  std::string why, last_why;
+  auto stable = [&](double h) {
+    why.clear();
+    const bool ok = stable_because(h, why);
+    if (!ok) last_why = why;
+    return ok;
+  };
+  StabilityLimit limit = [&] {
   StabilityLimit limit;
   if (stable(h_max)) {
     limit.h_stable = h_max;
@@ -60,6 +69,9 @@ StabilityLimit bisect(const std::function<bool(double)>& stable, double h_min, d
   limit.h_unstable = hi;
   limit.status = "bracketed";
   return limit;
+  }();
+  limit.unstable_check = last_why;
+  return limit;
 }
 
 }  // namespace
@@ -73,7 +85,7 @@ StabilityLimit oscillatorStability(const EngineRegistry& registry, const std::st
   RunConfig config = runConfig(scene);
   config.integrator.name = integrator;
   config.integrator.cg_tolerance = 1e-12;
-  auto stable = [&](double h) {
+  auto stable = [&](double h, std::string&) {
     RunConfig run = config;
     run.run.dt = h;
     run.run.duration = h * std::max(200.0, std::ceil(settings.periods * 2 * M_PI / (w * h)));
@@ -95,25 +107,76 @@ StabilityLimit oscillatorStability(const EngineRegistry& registry, const std::st
   return limit;
 }
 
+std::optional<double> stepLimitConstant(const std::string& integrator) {
+  if (integrator == "symplectic-euler" || integrator == "verlet") return 2.0;
+  if (integrator == "rk4") return 2.0 * std::sqrt(2.0);
+  if (integrator == "backward-euler") return std::numeric_limits<double>::infinity();
+  return std::nullopt;
+}
+
+std::string schemeOf(const std::string& engine, const std::string& scene_integrator) {
+  if (engine == "mysim") return scene_integrator;
+  if (engine.starts_with("mysim:")) return engine.substr(6);
+  if (engine == "bullet-deformable") return "symplectic-euler";  // docs/reference.md
+  if (engine == "bullet-implicit") return "backward-euler";     // one Newton step, linearised
+  return engine;
+}
+
+mysim::Model stressedModel(const mysim::Model& model, double stiffness, double mass_ratio) {
+  mysim::Model m = model;
+  if (stiffness > 0) {
+    for (mysim::Spring& s : m.springs) s.stiffness = stiffness;
+  }
+  if (mass_ratio != 1.0 && m.particleCount() > 1) {
+    auto heavy = [&](int p) {
+      if (m.grid) return (p / m.grid->cols + p % m.grid->cols) % 2 == 1;
+      return p % 2 == 1;
+    };
+    int heavy_count = 0;
+    for (int p = 0; p < m.particleCount(); ++p) heavy_count += heavy(p);
+    const double light =
+        model.mass.sum() / ((m.particleCount() - heavy_count) + mass_ratio * heavy_count);
+    for (int p = 0; p < m.particleCount(); ++p) m.mass[p] = heavy(p) ? mass_ratio * light : light;
+  }
+  return m;
+}
+
 StabilityLimit sceneStability(const EngineRegistry& registry, const mysim::Model& model,
-                              const RunConfig& config, const std::string& integrator,
-                              double stiffness, double mass, double h_min, double h_max,
-                              double precision) {
-  mysim::Model base = model;
-  for (mysim::Spring& s : base.springs) s.stiffness = stiffness;
-  if (mass > 0) base.mass.setConstant(mass);
-  RunConfig run = config;
-  run.integrator.name = integrator;
-  auto stable = [&](double h) {
+                              const RunConfig& config, const std::string& engine,
+                              const SceneStabilitySettings& settings) {
+  const double w_max = highestFrequency(model);
+  // Without a spring mode to scale by, search the scene's own range.
+  const double h_min = w_max > 0 ? settings.h_min_omega / w_max : config.run.dt / 100;
+  const double h_max = w_max > 0 ? settings.h_max_omega / w_max : config.run.dt * 100;
+  std::optional<std::string> refusal;
+  auto stable = [&](double h, std::string& why) {
+    RunConfig run = config;
     run.run.dt = h;
-    auto record = registry.run("mysim", base, run);
-    return record && !record->blowup;
+    run.run.duration = h * static_cast<double>(settings.steps);
+    run.run.sample_interval = h * static_cast<double>(std::max(1L, settings.steps / 100));
+    auto record = registry.run(engine, model, run);
+    if (!record) {
+      why = record.error().message;
+      if (record.error().kind != EngineError::Kind::Failed) refusal = why;
+      return false;
+    }
+    if (record->blowup) why = record->blowup->check;
+    return !record->blowup;
   };
-  StabilityLimit limit = bisect(stable, h_min, h_max, precision);
+  StabilityLimit limit = bisect(stable, h_min, h_max, settings.precision);
+  if (refusal) {  // the engine cannot run this model at all: no limit to report
+    limit = StabilityLimit{};
+    limit.status = "refused";
+    limit.unstable_check = *refusal;
+  }
   limit.system = config.scene_name;
-  limit.integrator = integrator;
-  limit.stiffness = stiffness;
-  limit.mass = base.mass.size() > 0 ? base.mass.maxCoeff() : 0.0;
+  limit.integrator = engine;
+  limit.w_max = w_max;
+  limit.mass = model.mass.size() > 0 ? model.mass.maxCoeff() : 0.0;
+  limit.stiffness = model.springs.empty() ? 0.0 : model.springs.front().stiffness;
+  if (auto c = stepLimitConstant(schemeOf(engine, config.integrator.name)); c && w_max > 0) {
+    limit.theory = *c / w_max;
+  }
   return limit;
 }
 

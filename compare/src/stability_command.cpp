@@ -12,13 +12,25 @@
 #include "commands.h"
 #include "compare/atomic_file.h"
 #include "compare/energy_metric.h"
+#include "compare/csv.h"
 #include "compare/stability.h"
+#include "mysim/thread_budget.h"
 
 namespace springcheck {
 namespace {
 
 struct StabilityOptions {
   std::string scene;
+  // Scene maps: every engine that steps with a fixed step (dopri5 picks its own).
+  std::vector<std::string> engines = {"mysim:euler",        "mysim:trapezoidal",
+                                      "mysim:rk4",          "mysim:symplectic-euler",
+                                      "mysim:verlet",       "mysim:backward-euler",
+                                      "bullet-deformable",  "bullet-implicit",
+                                      "bullet-classic"};
+  std::vector<int> classic_iterations = {1, 10, 50};
+  std::vector<double> mass_ratios = {1, 100, 1e4};
+  long steps = 4000;
+  std::vector<std::string> engines_files;
   std::vector<std::string> integrators = {"euler",  "trapezoidal",   "rk4", "symplectic-euler",
                                           "verlet", "backward-euler"};
   std::vector<double> stiffness = {10, 100, 1e3, 1e4, 1e5};
@@ -112,6 +124,109 @@ std::expected<void, std::string> writeExtremes(const EngineRegistry& registry,
   return writeFileAtomically(path, [&](std::ostream& file) { file << out.str(); });
 }
 
+std::string quoted(const std::string& text) { return csvField(text); }
+
+// Every engine's largest stable step on a scene, across stiffness and mass ratios, next to the
+// theory line c / w_max: out/stability_SCENE.csv.
+int sceneStabilityMaps(const StabilityOptions& o, const EngineRegistry& registry,
+                       const mysim::Scene& scene, int jobs) {
+  for (const std::string& engine : o.engines) {
+    if (auto ok = registry.check(engine); !ok) {
+      std::cerr << "error: --engines: " << ok.error() << '\n';
+      return kBadInput;
+    }
+  }
+  struct Cell {
+    std::string engine;
+    int classic_iterations;  // 0: not bullet-classic
+    double k, ratio;
+  };
+  std::vector<Cell> cells;
+  for (const std::string& engine : o.engines) {
+    const std::vector<int> passes =
+        engine == "bullet-classic" ? o.classic_iterations : std::vector<int>{0};
+    for (int p : passes) {
+      for (double k : o.stiffness) {
+        for (double ratio : o.mass_ratios) cells.push_back({engine, p, k, ratio});
+      }
+    }
+  }
+  const mysim::Model base = mysim::buildModel(scene);
+  std::vector<StabilityLimit> limits(cells.size());
+  std::mutex mutex;
+  int done = 0;
+  SceneStabilitySettings settings;
+  settings.steps = o.steps;
+  parallelFor(static_cast<int>(cells.size()), jobs, [&](int k) {
+    const Cell& c = cells[k];
+    RunConfig config = runConfig(scene);
+    config.run.threads = std::max(1, mysim::availableCores() / jobs);
+    // A soft spring may stretch past the strain check under the scene's own load without any
+    // numerical trouble: here only the energy checks (runaway, and rise in a passive scene)
+    // decide, as in the oscillator study.
+    config.limits.max_strain = 1e6;
+    if (c.classic_iterations > 0) {
+      config.engine_settings["bullet"]["classic_iterations"] = c.classic_iterations;
+    }
+    limits[k] = sceneStability(registry, stressedModel(base, c.k, c.ratio), config, c.engine,
+                               settings);
+    limits[k].mass_ratio = c.ratio;
+    std::lock_guard<std::mutex> lock(mutex);
+    ++done;
+    if (done % std::max<int>(1, cells.size() / 10) == 0 || done == static_cast<int>(cells.size())) {
+      std::cerr << "stability " << scene.name << ": " << done << "/" << cells.size() << " done\n";
+    }
+  });
+  std::ostringstream out;
+  out.precision(8);
+  out << "system,engine,classic_iterations,stiffness,mass_ratio,w_max,h_stable,h_unstable,status,"
+         "unstable_check,theory_h,ratio,h_w_max\n";
+  auto brief = [](const std::optional<double>& v) {
+    char text[32] = "";
+    if (v) std::snprintf(text, sizeof text, "%.4g", *v);
+    return std::string(text);
+  };
+  std::printf("%-24s %4s %9s %7s %11s %11s %11s %7s %7s  %s\n", "engine", "pass", "k [N/m]",
+              "m ratio", "w_max", "h_max [s]", "theory [s]", "h w", "ratio", "status");
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    const StabilityLimit& l = limits[k];
+    std::optional<double> ratio;
+    if (l.theory && std::isfinite(*l.theory) && l.status == "bracketed") {
+      ratio = l.h_stable / *l.theory;
+    }
+    const std::optional<double> hw =
+        l.status == "bracketed" ? std::optional(l.h_stable * l.w_max) : std::nullopt;
+    out << quoted(scene.name) << ',' << quoted(cells[k].engine) << ','
+        << (cells[k].classic_iterations ? std::to_string(cells[k].classic_iterations) : "") << ','
+        << cells[k].k << ',' << cells[k].ratio << ',' << l.w_max << ',' << l.h_stable << ','
+        << l.h_unstable << ',' << l.status << ',' << quoted(l.unstable_check) << ','
+        << cell(l.theory) << ',' << cell(ratio) << ',' << cell(hw) << '\n';
+    std::printf("%-24s %4s %9.3g %7.3g %11.4g %11.4g %11s %7s %7s  %s%s%s\n",
+                cells[k].engine.c_str(),
+                cells[k].classic_iterations ? std::to_string(cells[k].classic_iterations).c_str()
+                                            : "",
+                cells[k].k, cells[k].ratio, l.w_max, l.h_stable, brief(l.theory).c_str(),
+                brief(hw).c_str(), brief(ratio).c_str(), l.status.c_str(),
+                l.unstable_check.empty() ? "" : ": ",
+                l.unstable_check.substr(0, 60).c_str());
+  }
+  std::error_code ec;
+  std::filesystem::create_directories(o.out, ec);
+  if (ec) {
+    std::cerr << "error: --out: cannot create " << o.out << ": " << ec.message() << '\n';
+    return kFailure;
+  }
+  const std::string path = o.out + "/stability_" + scene.name + ".csv";
+  if (auto written =
+          writeFileAtomically(path, [&](std::ostream& file) { file << out.str(); });
+      !written) {
+    std::cerr << "error: " << written.error() << '\n';
+    return kFailure;
+  }
+  std::cout << "results in " << path << '\n';
+  return kOk;
+}
+
 int stability(const StabilityOptions& o) {
   const int jobs =
       o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -121,15 +236,15 @@ int stability(const StabilityOptions& o) {
       return kBadInput;
     }
   }
-  const EngineRegistry registry;
-  std::optional<mysim::Scene> scene;
+  const std::optional<EngineRegistry> registry = makeRegistry(o.engines_files);
+  if (!registry) return kBadInput;
   if (!o.scene.empty()) {
-    auto loaded = registry.loadScene(o.scene);
-    if (!loaded) {
-      std::cerr << "error: " << loaded.error() << '\n';
+    auto scene = registry->loadScene(o.scene);
+    if (!scene) {
+      std::cerr << "error: " << scene.error() << '\n';
       return kBadInput;
     }
-    scene = *loaded;
+    return sceneStabilityMaps(o, *registry, *scene, jobs);
   }
   struct Combo {
     std::string integrator;
@@ -146,10 +261,7 @@ int stability(const StabilityOptions& o) {
   int done = 0;
   parallelFor(static_cast<int>(combos.size()), jobs, [&](int k) {
     const Combo& c = combos[k];
-    limits[k] = scene ? sceneStability(registry, mysim::buildModel(*scene), runConfig(*scene),
-                                       c.integrator, c.k, c.m, scene->duration / 1e5,
-                                       scene->duration / 10, 0.02)
-                      : oscillatorStability(registry, c.integrator, c.k, c.m, o.damping_ratio, {});
+    limits[k] = oscillatorStability(*registry, c.integrator, c.k, c.m, o.damping_ratio, {});
     std::lock_guard<std::mutex> lock(mutex);
     ++done;
     if (done % std::max<int>(1, combos.size() / 10) == 0 ||
@@ -176,7 +288,7 @@ int stability(const StabilityOptions& o) {
       ratio = l.h_stable / *l.theory;
     }
     out << l.system << ',' << l.integrator << ',' << l.stiffness << ',' << l.mass << ',' << w << ','
-        << (scene ? 0.0 : o.damping_ratio) << ',' << l.h_stable << ',' << l.h_unstable << ','
+        << o.damping_ratio << ',' << l.h_stable << ',' << l.h_unstable << ','
         << l.status << ',' << cell(l.theory) << ',' << cell(ratio) << '\n';
     std::printf("%-12s %-17s %9.3g %9.3g %11.4g %11s %11.4g %7s  %s\n", l.system.c_str(),
                 l.integrator.c_str(), l.stiffness, l.mass, l.h_stable, cell(l.theory).c_str(),
@@ -189,7 +301,7 @@ int stability(const StabilityOptions& o) {
     return kFailure;
   }
   if (o.extremes) {
-    if (auto written = writeExtremes(registry, o.out + "/extremes.csv", jobs); !written) {
+    if (auto written = writeExtremes(*registry, o.out + "/extremes.csv", jobs); !written) {
       std::cerr << "error: " << written.error() << '\n';
       return kFailure;
     }
@@ -205,14 +317,32 @@ void addStabilityCommand(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand(
       "stability", "Largest stable step per integrator, stiffness and mass (bisection)");
   cmd->add_option("--scene", o->scene,
-                  "Scene (default: the built-in oscillator, with theory lines)");
-  cmd->add_option("--integrators", o->integrators, "Integrators")
+                  "Scene: every engine's stability map on it across --stiffness and "
+                  "--mass-ratios, with the w_max theory line (default: the built-in oscillator)");
+  cmd->add_option("--engines", o->engines, "Scene maps: engines")
+      ->delimiter(',')
+      ->capture_default_str();
+  addEnginesFileOption(cmd, o->engines_files);
+  cmd->add_option("--classic-iterations", o->classic_iterations,
+                  "Scene maps: bullet-classic's solver passes, each its own map")
+      ->delimiter(',')
+      ->check(CLI::Range(1, 10000))
+      ->capture_default_str();
+  cmd->add_option("--mass-ratios", o->mass_ratios,
+                  "Scene maps: heavy / light mass of neighbouring particles (total mass kept)")
+      ->delimiter(',')
+      ->check(CLI::Range(1.0, 1e8))
+      ->capture_default_str();
+  cmd->add_option("--steps", o->steps, "Scene maps: steps per trial run")
+      ->check(CLI::Range(10L, 10'000'000L))
+      ->capture_default_str();
+  cmd->add_option("--integrators", o->integrators, "Oscillator: integrators")
       ->delimiter(',')
       ->capture_default_str();
   cmd->add_option("--stiffness", o->stiffness, "Spring stiffness values, N/m")
       ->delimiter(',')
       ->capture_default_str();
-  cmd->add_option("--masses", o->masses, "Particle masses, kg")
+  cmd->add_option("--masses", o->masses, "Oscillator: particle masses, kg")
       ->delimiter(',')
       ->capture_default_str();
   cmd->add_option("--damping-ratio", o->damping_ratio, "Oscillator damping ratio (drag)")

@@ -22,7 +22,10 @@ std::optional<double> theoryStableStep(const std::string& integrator, double sti
 
 struct StabilityLimit {
   std::string system;  // "oscillator" or the scene's name
-  std::string integrator;
+  std::string integrator;  // the oscillator's; on a scene, the engine spec ("mysim:rk4", ...)
+  double mass_ratio = 1.0;  // scenes: heavy / light neighbour
+  double w_max = 0.0;       // rad/s, highest natural frequency (natural_frequency.h)
+  std::string unstable_check;  // the health check the smallest unstable step failed
   double stiffness = 0.0;   // N/m
   double mass = 0.0;        // kg
   double h_stable = 0.0;    // largest step found stable, s
@@ -44,11 +47,32 @@ StabilityLimit oscillatorStability(const EngineRegistry& registry, const std::st
                                    double stiffness, double mass,
                                    double damping_ratio, const StabilitySettings& settings);
 
-// The same on a model whose springs all get `stiffness` and particles `mass` (0: keep the
-// model's), over the run's duration; stable = no blow-up (the run's health checks).
+// The constant c of an engine's stability limit h w_max < c on an undamped linear system, where
+// theory gives one: symplectic Euler and Verlet (and bullet-deformable, which is symplectic Euler)
+// 2, RK4 2 sqrt 2, backward Euler (and bullet-implicit) infinity. Nothing for the rest: forward
+// Euler and Heun's trapezoidal are unstable at any step without damping and are limited by the
+// damping with it; dopri5 adapts its step; bullet-classic moves positions, not forces.
+std::optional<double> stepLimitConstant(const std::string& integrator);
+// The integrator behind an engine spec with the scene's integrator `scene_integrator`:
+// "mysim" -> it, "mysim:rk4" -> "rk4", Bullet engines -> their scheme's name, else the spec.
+std::string schemeOf(const std::string& engine, const std::string& scene_integrator);
+
+// The model with every spring at `stiffness` (0: keep each) and neighbouring particles' masses in
+// the ratio `mass_ratio` (heavy / light, alternating along the index, in a checkerboard on a
+// cloth grid; the total mass kept): light and heavy particles mixed, a classic stressor.
+mysim::Model stressedModel(const mysim::Model& model, double stiffness, double mass_ratio);
+
+struct SceneStabilitySettings {
+  long steps = 4000;          // each trial runs this many steps (instability grows per step)
+  double h_min_omega = 1e-2;  // search range, as h w_max
+  double h_max_omega = 30.0;
+  double precision = 0.02;    // stop when h_unstable / h_stable < 1 + precision
+};
+
+// Largest stable step of one engine on a (stressed) model by bisection in log h; stable = no
+// health check fails (blow-up, strain, energy, energy rise in a passive scene, step limit).
 StabilityLimit sceneStability(const EngineRegistry& registry, const mysim::Model& model,
-                              const RunConfig& config, const std::string& integrator,
-                              double stiffness, double mass, double h_min, double h_max,
-                              double precision);
+                              const RunConfig& config, const std::string& engine,
+                              const SceneStabilitySettings& settings);
 
 }  // namespace springcheck

@@ -1,0 +1,88 @@
+// Stability maps on real scenes: the highest natural frequency against its closed form, the
+// mass-ratio stressor, and measured limits against the theory line h w_max < c.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "compare/engine_registry.h"
+#include "compare/natural_frequency.h"
+#include "compare/stability.h"
+
+namespace springcheck {
+namespace {
+
+// A uniform chain hanging from its first particle: N free masses m on N springs k.
+mysim::Scene chain(int free_particles, double k, double m) {
+  mysim::Scene s;
+  s.name = "chain";
+  s.kind = mysim::SystemKind::Chain;
+  s.chain.particles = free_particles + 1;
+  s.chain.rest_length = 0.1;
+  s.chain.particle_mass = m;
+  s.chain.stiffness = k;
+  s.chain.direction = mysim::Vec3(0, -1, 0);
+  s.pins = {0};
+  s.gravity = mysim::Vec3(0, -9.8, 0);
+  s.integrator.name = "rk4";
+  s.dt = 1e-3;
+  s.duration = 1.0;
+  return s;
+}
+
+TEST(HighestFrequency, UniformFixedFreeChainMatchesItsClosedFormHighestMode) {
+  // w_j = 2 sqrt(k/m) sin((2j - 1) pi / (2 (2N + 1))), highest at j = N.
+  for (auto [n, k, m] : {std::tuple{1, 100.0, 1.0}, {9, 200.0, 0.05}, {40, 1e4, 0.01}}) {
+    const double exact = 2 * std::sqrt(k / m) * std::sin((2 * n - 1) * M_PI / (2 * (2 * n + 1)));
+    EXPECT_NEAR(highestFrequency(mysim::buildModel(chain(n, k, m))), exact, 1e-9 * exact)
+        << n << " free particles";
+  }
+}
+
+TEST(HighestFrequency, SingleSpringIsSqrtOfStiffnessOverReducedMass) {
+  mysim::Scene s = chain(1, 50.0, 0.5);
+  s.pins.clear();
+  s.gravity = mysim::Vec3::Zero();  // two free masses: w = sqrt(k (1/m1 + 1/m2))
+  EXPECT_NEAR(highestFrequency(mysim::buildModel(s)), std::sqrt(50.0 * 4.0), 1e-9);
+}
+
+TEST(StressedModel, KeepsTotalMassAndAlternatesNeighbourMassesInTheRatio) {
+  const mysim::Model base = mysim::buildModel(chain(9, 100.0, 0.05));
+  const mysim::Model m = stressedModel(base, 1e3, 100.0);
+  EXPECT_NEAR(m.mass.sum(), base.mass.sum(), 1e-12);
+  for (const mysim::Spring& s : m.springs) {
+    EXPECT_EQ(s.stiffness, 1e3);
+    const double ratio = std::max(m.mass[s.i], m.mass[s.j]) / std::min(m.mass[s.i], m.mass[s.j]);
+    EXPECT_NEAR(ratio, 100.0, 1e-9);
+  }
+}
+
+// In the linear regime (stiff springs: little stretch), the measured limit is the theory's.
+TEST(SceneStability, MeasuredLimitsMeetTheTheoryLineOnAStiffChain) {
+  const mysim::Scene scene = chain(9, 1e4, 0.05);
+  const EngineRegistry registry;
+  for (const char* engine : {"mysim:rk4", "mysim:symplectic-euler", "bullet-deformable"}) {
+    for (double ratio : {1.0, 100.0}) {
+      RunConfig config = runConfig(scene);
+      config.limits.max_strain = 1e6;
+      const StabilityLimit l = sceneStability(
+          registry, stressedModel(mysim::buildModel(scene), 0.0, ratio), config, engine, {});
+      ASSERT_EQ(l.status, "bracketed") << engine;
+      ASSERT_TRUE(l.theory);
+      EXPECT_NEAR(l.h_stable / *l.theory, 1.0, 0.05) << engine << " mass ratio " << ratio;
+    }
+  }
+}
+
+TEST(SceneStability, ImplicitEnginesAreStableAtTheLargestStepTried) {
+  const mysim::Scene scene = chain(9, 1e4, 0.05);
+  for (const char* engine : {"mysim:backward-euler", "bullet-implicit"}) {
+    RunConfig config = runConfig(scene);
+    config.limits.max_strain = 1e6;
+    const StabilityLimit l =
+        sceneStability(EngineRegistry(), mysim::buildModel(scene), config, engine, {});
+    EXPECT_EQ(l.status, "stable-at-max") << engine;  // h w_max = 30
+  }
+}
+
+}  // namespace
+}  // namespace springcheck

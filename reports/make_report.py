@@ -56,7 +56,8 @@ def style_cycle():
     markers = "osD^v<>ph*"
     i = 0
     while True:
-        yield colours[i % len(colours)], markers[i % len(markers)]
+        # markers shift on each pass through the colours: no two series look alike
+        yield colours[i % len(colours)], markers[(i + i // len(colours)) % len(markers)]
         i += 1
 
 
@@ -198,6 +199,54 @@ def figure_stability(rows):
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=7, ncol=2)
     fig.tight_layout()
+    return fig
+
+
+def figure_scene_stability(rows, scene):
+    """Largest stable step of every engine against stiffness, one panel per neighbour mass ratio,
+    with the theory line c / w_max of each scheme that has one (dashed)."""
+    ratios = sorted({number(r["mass_ratio"]) for r in rows})
+    fig, axes = plt.subplots(1, len(ratios), figsize=(5.2 * len(ratios), 5.2), squeeze=False)
+    engines = sorted({(r["engine"], r["classic_iterations"]) for r in rows})
+    handles = {}
+    for ax, ratio in zip(axes[0], ratios):
+        styles = style_cycle()
+        theory_drawn = set()
+        notes = []
+        for engine in engines:
+            pts = sorted((number(r["stiffness"]), r) for r in rows
+                         if (r["engine"], r["classic_iterations"]) == engine and number(r["mass_ratio"]) == ratio)
+            label = engine[0] + (f" ({engine[1]} passes)" if engine[1] else "")
+            colour, marker = next(styles)
+            shown = [(k, number(r["h_stable"])) for k, r in pts
+                     if r["status"] in ("bracketed", "stable-at-max") and number(r["h_stable"])]
+            if not shown:
+                refused = any(r["status"] == "refused" for _, r in pts)
+                notes.append(label + (": refuses this model" if refused else ": unstable at every step"))
+                continue
+            capped = any(r["status"] == "stable-at-max" for _, r in pts)
+            line, = ax.loglog([p[0] for p in shown], [p[1] for p in shown], marker=marker, color=colour,
+                              lw=1, label=label + (" (stable up to h w_max = 30)" if capped else ""))
+            handles.setdefault(label, line)
+            theory = [(k, number(r["theory_h"])) for k, r in pts]
+            if all(t is not None and math.isfinite(t) and t > 0 for _, t in theory):
+                key = round(theory[0][1] * number(pts[0][1]["w_max"]), 3)  # the constant c
+                if key not in theory_drawn:
+                    theory_drawn.add(key)
+                    ax.loglog([t[0] for t in theory], [t[1] for t in theory], "--", color="0.3", lw=1)
+                    ax.annotate(f"h w_max = {key:g}", (theory[-1][0], theory[-1][1]), fontsize=7,
+                                xytext=(-60, 4), textcoords="offset points", color="0.3")
+        ax.set_xlabel("spring stiffness k [N/m]")
+        ax.set_title(f"neighbour mass ratio {ratio:g}")
+        ax.grid(True, which="both", alpha=0.3)
+        if notes:
+            ax.text(0.02, 0.02, "\n".join(notes), transform=ax.transAxes, fontsize=7, va="bottom",
+                    bbox=dict(facecolor="white", alpha=0.8, edgecolor="0.8"))
+    axes[0][0].set_ylabel("largest stable step [s]")
+    fig.legend(list(handles.values()), [h.get_label() for h in handles.values()], fontsize=7.5,
+               loc="lower center", ncol=4, frameon=False)
+    fig.suptitle(f"stability map: {scene}, every engine (dashed: theory c / w_max, w_max by Lanczos)")
+    fig.tight_layout(rect=(0, 0.1, 1, 1))
     return fig
 
 
@@ -350,6 +399,13 @@ def main():
         ("06_drape", figure_drape(args.results)),
         ("07_sag_penetration", figure_sag_penetration(args.results)),
     ]
+    stability_dir = os.path.join(args.results, "stability")
+    maps = [f for f in sorted(os.listdir(stability_dir)) if f.startswith("stability_") and f.endswith(".csv")] \
+        if os.path.isdir(stability_dir) else []
+    for n, f in enumerate(maps):
+        scene = f[len("stability_"):-len(".csv")]
+        figures.insert(4 + n, (f"04_stability_map_{scene}",
+                           figure_scene_stability(read_csv(os.path.join(stability_dir, f)), scene)))
     bench_json = os.path.join(args.results, "bench", "bench.json")
     if os.path.exists(bench_json):  # scripts/run-bench.sh was run: add its page
         figures.append(("08_performance", figure_performance(bench_json)))

@@ -33,6 +33,10 @@ for spec in compare/sweeps/*.json; do
   $B sweep "$spec" --out "$OUT/sweep/$(basename "$spec" .json).csv"
 done
 $B stability --out "$OUT/stability" --extremes >/dev/null
+# Every engine's stability map on the chain and the cloth, with the w_max theory lines (the
+# cloth over two mass ratios to stay inside the job's time; --mass-ratios 1,100,1e4 for all).
+$B stability --scene scenes/matched/chain_swing.json --out "$OUT/stability" >/dev/null
+$B stability --scene scenes/matched/cloth_hanging.json --mass-ratios 1,1e4 --out "$OUT/stability" >/dev/null
 $B report --results "$OUT" --out "$OUT/report"
 echo "main job done in $(( $(date +%s) - start )) s; report: $OUT/report/report.pdf"
 exit "$gate_status"

@@ -23,6 +23,7 @@ mysim::Scene oscillatorScene(double stiffness, double mass, double damping_ratio
   s.limits.max_strain = 1e6;
   s.limits.max_energy_ratio = 1e12;
   s.limits.max_energy_rise = std::numeric_limits<double>::infinity();
+  s.limits.max_energy_rise_damped = std::numeric_limits<double>::infinity();
   return s;
 }
 
@@ -152,8 +153,10 @@ StabilityLimit sceneStability(const EngineRegistry& registry, const mysim::Model
   auto stable = [&](double h, std::string& why) {
     RunConfig run = config;
     run.run.dt = h;
-    run.run.duration = h * static_cast<double>(settings.steps);
-    run.run.sample_interval = h * static_cast<double>(std::max(1L, settings.steps / 100));
+    const long steps = settings.duration > 0 ? std::max(1L, std::lround(settings.duration / h))
+                                             : settings.steps;
+    run.run.duration = h * static_cast<double>(steps);
+    run.run.sample_interval = h * static_cast<double>(std::max(1L, steps / 100));
     auto record = registry.run(engine, model, run);
     if (!record) {
       why = record.error().message;

@@ -30,6 +30,7 @@ struct StabilityOptions {
   std::vector<int> classic_iterations = {1, 10, 50};
   std::vector<double> mass_ratios = {1, 100, 1e4};
   long steps = 4000;
+  bool whole_run = false;
   std::vector<std::string> engines_files;
   std::vector<std::string> integrators = {"euler",  "trapezoidal",   "rk4", "symplectic-euler",
                                           "verlet", "backward-euler"};
@@ -157,6 +158,7 @@ int sceneStabilityMaps(const StabilityOptions& o, const EngineRegistry& registry
   int done = 0;
   SceneStabilitySettings settings;
   settings.steps = o.steps;
+  if (o.whole_run) settings.duration = scene.duration;
   parallelFor(static_cast<int>(cells.size()), jobs, [&](int k) {
     const Cell& c = cells[k];
     RunConfig config = runConfig(scene);
@@ -336,6 +338,9 @@ void addStabilityCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--steps", o->steps, "Scene maps: steps per trial run")
       ->check(CLI::Range(10L, 10'000'000L))
       ->capture_default_str();
+  cmd->add_flag("--whole-run", o->whole_run,
+                "Scene maps: every trial runs the scene's whole duration instead of --steps "
+                "(a slow instability then shows; costs many steps at small steps)");
   cmd->add_option("--integrators", o->integrators, "Oscillator: integrators")
       ->delimiter(',')
       ->capture_default_str();

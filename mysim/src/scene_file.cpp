@@ -292,6 +292,8 @@ Scene readScene(const json& root, const std::vector<EngineSection>& sections) {
     scene.limits.max_strain = r.positive("max_strain", scene.limits.max_strain);
     scene.limits.max_energy_ratio = r.positive("max_energy_ratio", scene.limits.max_energy_ratio);
     scene.limits.max_energy_rise = r.positive("max_energy_rise", scene.limits.max_energy_rise);
+    scene.limits.max_energy_rise_damped =
+        r.positive("max_energy_rise_damped", scene.limits.max_energy_rise_damped);
     r.refuseUnknown("docs/scenes.md");
   }
   for (const EngineSection& section : sections) {

@@ -95,7 +95,8 @@ RunRecord simulate(OdeSystem& system, Stepper& stepper, State state, const RunSe
                                  "total energy " + std::to_string(rise) +
                                      " J above its lowest earlier value, more than " +
                                      std::to_string(*rise_limit) +
-                                     " J (blowup.max_energy_rise of the energy scale): a "
+                                     " J (blowup.max_energy_rise, or max_energy_rise_damped with drag, of the "
+                                     "energy scale): a "
                                      "passive scene cannot gain energy"};
           break;
         }

@@ -64,6 +64,9 @@ mysim::Model stressedModel(const mysim::Model& model, double stiffness, double m
 
 struct SceneStabilitySettings {
   long steps = 4000;          // each trial runs this many steps (instability grows per step)
+  // > 0: each trial runs this long instead (s), whatever its step: a step called stable then
+  // holds over the whole run, at the price of many steps at small h.
+  double duration = 0.0;
   double h_min_omega = 1e-2;  // search range, as h w_max
   double h_max_omega = 30.0;
   double precision = 0.02;    // stop when h_unstable / h_stable < 1 + precision

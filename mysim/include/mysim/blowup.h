@@ -19,6 +19,12 @@ struct BlowUpLimits {
   // 10 % leaves three times the largest and is still tiny against what an unstable run pumps in
   // (forward Euler on the same chain: past 10 % within 0.8 s, exploding soon after).
   double max_energy_rise = 0.1;
+  // The same in a passive scene with drag, where every mode decays and stable runs rise less
+  // still (measured: bullet-classic 1.9 % on chain_hanging, every mysim integrator and the other
+  // Bullet engines below 0.05 % on the matched damped scenes). An instability that levels off
+  // hides below 10 % there: RK4 on cloth_hanging at h = 6 ms rises 3.6 % and keeps 8 mJ of
+  // motion where the converged run keeps 1.6e-11 J. 2.5 % catches it and passes classic.
+  double max_energy_rise_damped = 0.025;
 };
 
 // What stopped a run: when, at which step and which check.

@@ -26,7 +26,8 @@ class ParticleSystem final : public OdeSystem {
   bool hasExternalDriver() const override { return model_.wind || model_.pin_motion; }
   std::optional<double> energyRiseLimit() const override {
     if (hasExternalDriver()) return std::nullopt;
-    return limits_.max_energy_rise * energy_scale_;
+    return (model_.drag > 0.0 ? limits_.max_energy_rise_damped : limits_.max_energy_rise) *
+           energy_scale_;
   }
   // Wind: its force is constant within a gust window, so over a step inside one window the work
   // is exactly F . (x_after - x_before) (evaluated at the step's midpoint time). Moving pins:

@@ -48,7 +48,8 @@ def number(text):
 
 
 def label_of(row):
-    return row["engine"] if row["integrator"] in ("-", "") else f"{row['engine']}:{row['integrator']}"
+    label = row["engine"] if row["integrator"] in ("-", "") else f"{row['engine']}:{row['integrator']}"
+    return label + (f" tol {row['tolerance']}" if row.get("tolerance") else "")
 
 
 def style_cycle():
@@ -168,8 +169,9 @@ def figure_convergence(rows, name):
     for order, style in ((1, ":"), (2, "--"), (4, "-.")):
         ax.loglog(h, anchor * (h / h[-1]) ** order, style, color="grey", lw=1.2, label=f"slope {order}")
     ax.set_xlabel("step dt [s]")
-    ax.set_ylabel("error vs converged run [m]")
-    ax.set_title(f"convergence: {name} (first second)")
+    refs = sorted({r["reference"] for r in rows if r.get("reference")})
+    ax.set_ylabel(f"error vs {', '.join(refs) or 'reference'} (max RMS node distance) [m]")
+    ax.set_title(f"convergence: {name}" + (" (each engine against itself)" if any(x.startswith("self") for x in refs) else ""))
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=7, ncol=2)
     fig.tight_layout()
@@ -389,11 +391,17 @@ def main():
     stability = read_csv(os.path.join(args.results, "stability", "stability.csv"))
     extremes = read_csv(os.path.join(args.results, "stability", "extremes.csv"))
     convergence_name = next((n for n in sweeps if "convergence" in n), next(iter(sweeps)))
+    # Self-consistency sweeps measure each engine against itself: their own convergence page,
+    # never on the speed/accuracy page, whose errors share one reference.
+    self_sweeps = {n: rows for n, rows in sweeps.items()
+                   if any(r.get("reference", "").startswith("self") for r in rows)}
+    shared = {n: rows for n, rows in sweeps.items() if n not in self_sweeps} or sweeps
 
     figures = [
         ("01_summary", figure_summary(args.results, sweeps, stability, extremes)),
-        ("02_speed_accuracy", figure_speed_accuracy(sweeps)),
+        ("02_speed_accuracy", figure_speed_accuracy(shared)),
         ("03_convergence", figure_convergence(sweeps[convergence_name], convergence_name)),
+    ] + [(f"03_convergence_{n}", figure_convergence(rows, n)) for n, rows in self_sweeps.items()] + [
         ("04_stability_map", figure_stability(stability)),
         ("05_energy_drift", figure_energy(args.results)),
         ("06_drape", figure_drape(args.results)),

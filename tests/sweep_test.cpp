@@ -66,7 +66,7 @@ TEST_F(SmallSweep, TableHasOneRowPerCaseWithEveryColumn) {
   for (std::size_t k = 0; k < rows.size(); ++k) {
     EXPECT_EQ(rows[k].size(), sweepColumns().size());
     EXPECT_EQ(rows[k][0], std::to_string(k));  // sorted by case id
-    EXPECT_EQ(rows[k][6], "ok");
+    EXPECT_EQ(rows[k][column("status")], "ok");
   }
   // RK4 beats Euler at every step; both errors shrink with dt.
   auto error = [&](int id) { return std::stod(rows[id][column("error")]); };
@@ -182,6 +182,67 @@ TEST_F(SmallSweep, TimingRoundsRecordFastestOfRepeatsAndTheirConditions) {
     EXPECT_GE(std::stoi(row[column("threads")]), 1);
     EXPECT_FALSE(row[column("load_average")].empty());
   }
+}
+
+// Self-consistency: each engine against its own run at a step 16 times finer. On the undamped
+// swinging chain every first-order scheme (mysim's symplectic Euler, and Bullet's explicit
+// solver, which is one) halves its error when the step halves: order 1 against itself, measured
+// on Bullet without any mysim run in the reference.
+TEST(SelfConsistentSweep, EachEngineConvergesAgainstItsOwnFinerRunAtItsOrder) {
+  EngineRegistry registry;
+  auto spec = parseSweepSpec(
+      R"({"name": "self", "scenes": [")" SPRINGCHECK_SOURCE_DIR
+      R"(/scenes/matched/chain_swing.json"], "engines": ["mysim", "bullet-deformable"],
+          "integrators": ["symplectic-euler"], "dt": [0.002, 0.001, 0.0005], "duration": 0.5,
+          "sample_interval": 0.01, "reference": {"self": true, "refine": 16}})",
+      SPRINGCHECK_SOURCE_DIR "/compare/sweeps/self.json", registry);
+  ASSERT_TRUE(spec) << spec.error();
+  const fs::path out = fs::temp_directory_path() / ("springcheck_self_" + std::to_string(::getpid()) + ".csv");
+  auto ran = runSweep(registry, *spec, out.string(), {.jobs = 2, .resume = false});
+  ASSERT_TRUE(ran) << ran.error();
+  const auto rows = *readSweepTable(out.string());
+  fs::remove(out);
+  const auto& cols = sweepColumns();
+  auto at = [&](const SweepRow& row, const char* name) {
+    return row[std::find(cols.begin(), cols.end(), name) - cols.begin()];
+  };
+  ASSERT_EQ(rows.size(), 6u);
+  for (int engine = 0; engine < 2; ++engine) {
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(at(rows[3 * engine + k], "reference"), "self at dt/16");
+    for (int k = 0; k < 2; ++k) {
+      const double ratio = std::stod(at(rows[3 * engine + k], "error")) /
+                           std::stod(at(rows[3 * engine + k + 1], "error"));
+      // Order 1 against a reference 16x finer: e(h) ~ h - h/16, ratio 2 (1.8 to 2.2 allowed).
+      EXPECT_NEAR(ratio, 2.0, 0.2) << at(rows[3 * engine + k], "engine");
+    }
+  }
+}
+
+// dopri5's tolerance is its own axis: a tighter tolerance, a smaller error, for the same step.
+TEST(ToleranceSweep, Dopri5ErrorFallsWithItsTolerance) {
+  EngineRegistry registry;
+  auto spec = parseSweepSpec(
+      R"({"name": "tol", "scenes": [")" SPRINGCHECK_SOURCE_DIR
+      R"(/scenes/seed/circle.json"], "integrators": ["dopri5", "rk4"], "dt": [1.0],
+          "tolerance": [1e-3, 1e-6, 1e-9], "duration": 10.0, "reference": "closed_form"})",
+      SPRINGCHECK_SOURCE_DIR "/compare/sweeps/tol.json", registry);
+  ASSERT_TRUE(spec) << spec.error();
+  const auto cases = expandSweep(*spec);
+  ASSERT_EQ(cases.size(), 4u);  // dopri5 at three tolerances, rk4 once (not adaptive)
+  const fs::path out = fs::temp_directory_path() / ("springcheck_tol_" + std::to_string(::getpid()) + ".csv");
+  ASSERT_TRUE(runSweep(registry, *spec, out.string(), {.jobs = 1, .resume = false}));
+  const auto rows = *readSweepTable(out.string());
+  fs::remove(out);
+  const auto& cols = sweepColumns();
+  auto at = [&](const SweepRow& row, const char* name) {
+    return row[std::find(cols.begin(), cols.end(), name) - cols.begin()];
+  };
+  EXPECT_EQ(at(rows[0], "tolerance"), "0.001");
+  EXPECT_EQ(at(rows[3], "tolerance"), "");
+  const double e3 = std::stod(at(rows[0], "error")), e6 = std::stod(at(rows[1], "error")),
+               e9 = std::stod(at(rows[2], "error"));
+  EXPECT_LT(e6, e3 / 10);
+  EXPECT_LT(e9, e6 / 10);
 }
 
 }  // namespace

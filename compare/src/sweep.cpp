@@ -84,6 +84,7 @@ SweepSpec readSpec(const json& j, const std::string& source, EngineRegistry& reg
   }
   s.dts = top.positiveList("dt");
   if (top.has("stiffness_scale")) s.stiffness_scales = top.positiveList("stiffness_scale");
+  if (top.has("tolerance")) s.tolerances = top.positiveList("tolerance");
   if (top.has("duration")) s.duration = top.positive("duration");
   s.sample_interval = top.positive("sample_interval", *std::max_element(s.dts.begin(), s.dts.end()));
   for (std::size_t k = 0; k < s.dts.size(); ++k) {
@@ -104,15 +105,24 @@ SweepSpec readSpec(const json& j, const std::string& source, EngineRegistry& reg
   const json& ref = top.raw("reference");
   if (ref.is_string() && ref.get<std::string>() == "closed_form") {
     s.reference_closed_form = true;
+  } else if (ref.is_string() && ref.get<std::string>() == "self") {
+    s.reference_self = true;
   } else if (ref.is_object()) {
     mysim::FieldReader r = top.object("reference");
+    if (r.has("integrator") && r.has("self")) {
+      throw FieldError{"reference", "either \"integrator\" or \"self\", not both"};
+    }
+    s.reference_self = r.boolean("self", false);
     auto name = mysim::canonicalIntegratorName(r.text("integrator", "rk4"));
     if (!name) throw FieldError{"reference.integrator", name.error()};
     s.reference_integrator = *name;
     s.reference_refine = static_cast<int>(r.integer("refine", 1, 1'000'000, 16));
     r.refuseUnknown(kSchema);
   } else {
-    mysim::failField("reference", "\"closed_form\" or {\"integrator\": NAME, \"refine\": N}", ref);
+    mysim::failField("reference",
+                     "\"closed_form\", \"self\", {\"integrator\": NAME, \"refine\": N} or "
+                     "{\"self\": true, \"refine\": N}",
+                     ref);
   }
   top.refuseUnknown(kSchema);
   return s;
@@ -146,8 +156,15 @@ std::vector<SweepCase> expandSweep(const SweepSpec& spec) {
         const std::vector<std::string> integrators =
             takes_integrator ? spec.integrators : std::vector<std::string>{"-"};
         for (const std::string& integrator : integrators) {
-          for (double dt : spec.dts) {
-            cases.push_back({static_cast<int>(cases.size()), scene, engine, integrator, dt, scale});
+          const mysim::IntegratorInfo* info = mysim::findIntegrator(integrator);
+          const std::vector<double> tolerances = info && info->adaptive && !spec.tolerances.empty()
+                                                     ? spec.tolerances
+                                                     : std::vector<double>{0.0};
+          for (double tolerance : tolerances) {
+            for (double dt : spec.dts) {
+              cases.push_back({static_cast<int>(cases.size()), scene, engine, integrator, dt,
+                               scale, tolerance});
+            }
           }
         }
       }
@@ -166,6 +183,7 @@ std::expected<CaseRun, std::string> caseRun(const SweepSpec& spec, const SweepCa
   run.config.run.dt = c.dt;
   if (spec.duration) run.config.run.duration = *spec.duration;
   run.config.run.sample_interval = spec.sample_interval;
+  if (c.tolerance > 0) run.config.integrator.abs_tolerance = run.config.integrator.rel_tolerance = c.tolerance;
   mysim::scaleStiffness(run.model, c.stiffness_scale);
   return run;
 }
@@ -177,6 +195,7 @@ const std::vector<std::string>& sweepColumns() {
                                                    "integrator",
                                                    "dt",
                                                    "stiffness_scale",
+                                                   "tolerance",
                                                    "status",
                                                    "blowup_time",
                                                    "blowup_check",
@@ -206,9 +225,28 @@ const std::vector<std::string>& sweepColumns() {
 
 namespace {
 
-constexpr int kParameterColumns = 6;  // case_id .. stiffness_scale
+constexpr int kParameterColumns = 7;  // case_id .. tolerance
 
-using ReferenceKey = std::pair<std::string, double>;  // scene, stiffness scale
+std::size_t columnIndex(const std::string& name) {
+  const auto& cols = sweepColumns();
+  return static_cast<std::size_t>(std::find(cols.begin(), cols.end(), name) - cols.begin());
+}
+
+// The run a case is measured against: the spec's converged run per scene and stiffness, or
+// (reference_self) the case's own engine, integrator and tolerance at the finest step / refine.
+SweepCase referenceCase(const SweepSpec& spec, const SweepCase& c) {
+  const double step = *std::min_element(spec.dts.begin(), spec.dts.end()) / spec.reference_refine;
+  if (spec.reference_self) {
+    return {-1, c.scene, c.engine, c.integrator, step, c.stiffness_scale, c.tolerance};
+  }
+  return {-1, c.scene, "mysim", spec.reference_integrator, step, c.stiffness_scale, 0.0};
+}
+
+using ReferenceKey = std::tuple<std::string, double, std::string, std::string, double>;
+ReferenceKey referenceKey(const SweepCase& reference) {
+  return {reference.scene, reference.stiffness_scale, reference.engine, reference.integrator,
+          reference.tolerance};
+}
 
 // The machine's 1-minute load average (0 where there is no /proc/loadavg).
 double loadAverage() {
@@ -219,10 +257,13 @@ double loadAverage() {
 }
 
 SweepRow runCase(const EngineRegistry& registry, const SweepSpec& spec, const SweepCase& c,
-                 const std::map<ReferenceKey, mysim::RunRecord>& references,
+                 const std::map<ReferenceKey, std::expected<mysim::RunRecord, std::string>>&
+                     references,
                  const SweepOptions& options) {
-  SweepRow row = {std::to_string(c.id), c.scene,      c.engine,
-                  c.integrator,         number(c.dt), number(c.stiffness_scale)};
+  SweepRow row = {std::to_string(c.id),         c.scene,
+                  c.engine,                     c.integrator,
+                  number(c.dt),                 number(c.stiffness_scale),
+                  c.tolerance > 0 ? number(c.tolerance) : ""};
   row.resize(sweepColumns().size());
   auto set = [&](const std::string& column, const std::string& value) {
     const auto& cols = sweepColumns();
@@ -286,11 +327,16 @@ SweepRow runCase(const EngineRegistry& registry, const SweepSpec& spec, const Sw
       set("final_error", number(cf->error));
     }
   } else {
-    const auto it = references.find({c.scene, c.stiffness_scale});
-    if (it != references.end()) {
-      if (auto d = trajectoryDistance(r, it->second)) {
-        set("reference",
-            spec.reference_integrator + " at dt/" + std::to_string(spec.reference_refine));
+    const auto it = references.find(referenceKey(referenceCase(spec, c)));
+    const std::string label =
+        (spec.reference_self ? std::string("self") : spec.reference_integrator) + " at dt/" +
+        std::to_string(spec.reference_refine);
+    if (it != references.end() && !it->second) {
+      set("note", row[columnIndex("note")] + (row[columnIndex("note")].empty() ? "" : "; ") +
+                      "no " + label + " reference: " + it->second.error());
+    } else if (it != references.end()) {
+      if (auto d = trajectoryDistance(r, *it->second)) {
+        set("reference", label);
         set("error", number(d->max_rms));
         set("final_error", number(d->last_rms));
       }
@@ -300,11 +346,6 @@ SweepRow runCase(const EngineRegistry& registry, const SweepSpec& spec, const Sw
 }
 
 std::string header() { return csvLine(sweepColumns()); }
-
-std::size_t columnIndex(const std::string& name) {
-  const auto& cols = sweepColumns();
-  return static_cast<std::size_t>(std::find(cols.begin(), cols.end(), name) - cols.begin());
-}
 
 void retimeRows(const EngineRegistry& registry, const SweepSpec& spec,
                 const std::vector<SweepCase>& cases, const SweepOptions& options,
@@ -439,42 +480,45 @@ std::expected<int, std::string> runSweep(const EngineRegistry& registry, const S
     }
   }
 
-  // Converged references, one per (scene, stiffness), before the cases that need them.
-  std::map<ReferenceKey, mysim::RunRecord> references;
+  // The references, each run once, before the cases that need them.
+  std::map<ReferenceKey, std::expected<mysim::RunRecord, std::string>> references;
   if (!spec.reference_closed_form) {
-    std::set<ReferenceKey> keys;
-    for (const SweepCase& c : todo) keys.insert({c.scene, c.stiffness_scale});
-    const double finest = *std::min_element(spec.dts.begin(), spec.dts.end());
-    std::vector<ReferenceKey> list(keys.begin(), keys.end());
+    std::map<ReferenceKey, SweepCase> wanted;
+    for (const SweepCase& c : todo) {
+      const SweepCase ref = referenceCase(spec, c);
+      wanted.emplace(referenceKey(ref), ref);
+    }
+    std::vector<SweepCase> list;
+    for (const auto& [key, ref] : wanted) list.push_back(ref);
     std::vector<std::expected<mysim::RunRecord, std::string>> results(list.size());
     std::atomic<std::size_t> next{0};
     auto work = [&] {
       for (std::size_t k; (k = next++) < list.size();) {
-        SweepCase c{-1,
-                    list[k].first,
-                    "mysim",
-                    spec.reference_integrator,
-                    finest / spec.reference_refine,
-                    list[k].second};
-        auto run = caseRun(spec, c);
+        auto run = caseRun(spec, list[k]);
         if (!run) {
           results[k] = std::unexpected(run.error());
           continue;
         }
-        auto record = registry.run("mysim", run->model, run->config);
-        results[k] = record ? std::expected<mysim::RunRecord, std::string>(std::move(*record))
-                            : std::unexpected(record.error().message);
+        auto record = registry.run(list[k].engine, run->model, run->config);
+        if (!record) {
+          results[k] = std::unexpected(record.error().message);
+        } else if (record->blowup) {
+          results[k] = std::unexpected("it blew up (" + record->blowup->check + ")");
+        } else {
+          results[k] = std::move(*record);
+        }
       }
     };
     std::vector<std::thread> threads;
     for (int t = 0; t < std::max(1, options.jobs); ++t) threads.emplace_back(work);
     for (std::thread& t : threads) t.join();
     for (std::size_t k = 0; k < list.size(); ++k) {
-      if (!results[k])
-        return std::unexpected("reference run of " + list[k].first + ": " + results[k].error());
-      if (results[k]->blowup)
-        return std::unexpected("reference run of " + list[k].first + " blew up");
-      references.emplace(list[k], std::move(*results[k]));
+      // The spec's one converged reference must exist; an engine's own (self) may be missing,
+      // which its rows then say.
+      if (!results[k] && !spec.reference_self) {
+        return std::unexpected("reference run of " + list[k].scene + ": " + results[k].error());
+      }
+      references.emplace(referenceKey(list[k]), std::move(results[k]));
     }
   }
 

@@ -26,7 +26,7 @@ const std::vector<IntegratorInfo>& integratorCatalog() {
       {"backward-euler", "", "Baraff-Witkin implicit Euler (1 Newton step, CG), order 1", true,
        [](S s) { return makeBackwardEuler(s.cg_tolerance, s.cg_max_iterations); }},
       {"dopri5", "", "adaptive Dormand-Prince 5(4), abs/rel tolerance", false,
-       [](S s) { return makeDormandPrince(s.abs_tolerance, s.rel_tolerance); }},
+       [](S s) { return makeDormandPrince(s.abs_tolerance, s.rel_tolerance); }, true},
   };
   return catalog;
 }

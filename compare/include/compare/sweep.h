@@ -24,11 +24,16 @@ struct SweepSpec {
   std::string engines_file;                     // the user's engines the spec names, if any
   std::vector<double> dts;                     // s
   std::vector<double> stiffness_scales{1.0};   // every spring's stiffness times this
+  // Adaptive integrators (dopri5): abs and rel tolerance, an axis of its own (empty: the scene's).
+  std::vector<double> tolerances;
   std::optional<double> duration;              // s, overrides the scenes'
   double sample_interval = 0.0;                // s, a multiple of every dt: frames line up
   // The reference every row is measured against: the scene's closed form, or a converged run
-  // (`reference_integrator` at the smallest dt / `reference_refine`).
+  // (`reference_integrator` at the smallest dt / `reference_refine`), or with reference_self each
+  // case's own engine, integrator and tolerance at that step (self-consistency, Erez et al. 2015:
+  // every engine's convergence measured against itself).
   bool reference_closed_form = false;
+  bool reference_self = false;
   std::string reference_integrator = "rk4";
   int reference_refine = 16;
 };
@@ -49,6 +54,7 @@ struct SweepCase {
   std::string integrator;  // mysim's; the Bullet engines' own scheme otherwise
   double dt = 0.0;
   double stiffness_scale = 1.0;
+  double tolerance = 0.0;  // adaptive integrators: abs and rel tolerance (0: the scene's)
 };
 std::vector<SweepCase> expandSweep(const SweepSpec& spec);
 

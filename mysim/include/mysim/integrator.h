@@ -47,6 +47,8 @@ struct IntegratorInfo {
   std::string description;
   bool needs_particles;  // second-order methods need a ParticleSystem (x' = v, v' = a)
   std::function<std::unique_ptr<Integrator>(const IntegratorSettings&)> make;
+  // Picks its own internal steps to meet abs/rel tolerance: the tolerance is its accuracy knob.
+  bool adaptive = false;
 };
 const std::vector<IntegratorInfo>& integratorCatalog();
 const IntegratorInfo* findIntegrator(std::string_view name);  // by name or alias

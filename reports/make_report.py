@@ -21,6 +21,7 @@ import json
 import math
 import os
 import sys
+import textwrap
 from collections import defaultdict
 
 import matplotlib
@@ -30,7 +31,6 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.backends.backend_pdf import PdfPages  # noqa: E402
 
-ERROR_BOUND_M = 1e-3  # "fastest within this error" on the first page
 
 
 def read_csv(path):
@@ -72,16 +72,29 @@ def pareto(points):
     return front
 
 
-def fastest_within(rows, bound):
-    ok = [r for r in rows if r["status"] == "ok" and number(r["error"]) is not None
-          and number(r["error"]) <= bound]
-    return min(ok, key=lambda r: number(r["wall_seconds"])) if ok else None
-
-
 def figure_summary(results, sweeps, stability, extremes):
     fig = plt.figure(figsize=(8.27, 11.69))
     fig.text(0.5, 0.96, "springcheck report", ha="center", fontsize=18, weight="bold")
     lines = []
+    # The answer first: `springcheck recommend` on each sweep (the main job writes recommend/).
+    rec_dir = os.path.join(results, "recommend")
+    recs = sorted(f for f in os.listdir(rec_dir) if f.endswith(".json")) if os.path.isdir(rec_dir) else []
+    for f in recs:
+        rec = json.load(open(os.path.join(rec_dir, f)))
+        lines.append(f"Recommended ({os.path.splitext(f)[0]}): cheapest by {rec['cost'].replace('_', ' ')} "
+                     f"with error <= {rec['max_error']:g} m")
+        for r in rec["recommendations"]:
+            lines.append(f"  {os.path.basename(r['scene'])}, stiffness x{r['stiffness_scale']:g} "
+                         f"({r['meeting']} of {r['candidates']} finished runs meet it):")
+            if r["best"]:
+                for tag, c in (("best", r["best"]), ("runner-up", r["runner_up"])):
+                    if c:
+                        lines.extend(textwrap.wrap(f"{tag}: {c['summary']}", 96,
+                                                   initial_indent="    ", subsequent_indent="      "))
+            else:
+                lines.append("    none stays under the bound")
+    if recs:
+        lines.append("")
     gate = json.load(open(os.path.join(results, "gate.json")))
     checks = gate["checks"]
     passed = sum(c["passed"] for c in checks)
@@ -96,12 +109,7 @@ def figure_summary(results, sweeps, stability, extremes):
         lines.append(f"  {os.path.basename(c['scene']):22s} {c['metric']:18s} {' ~ '.join(c['engines']):40s} {measured}")
     lines.append("")
     for name, rows in sweeps.items():
-        rows1 = [r for r in rows if number(r["stiffness_scale"]) == 1.0]
-        best = fastest_within(rows1, ERROR_BOUND_M)
         lines.append(f"Sweep {name}: {len(rows)} runs, {sum(r['status'] == 'blowup' for r in rows)} blew up")
-        if best:
-            lines.append(f"  fastest within {ERROR_BOUND_M:g} m of the converged run: {label_of(best)} at "
-                         f"dt {best['dt']} s, {number(best['wall_seconds']) * 1e3:.2f} ms, error {number(best['error']):.2g} m")
         blown = sorted({(label_of(r), r["dt"], r["stiffness_scale"]) for r in rows if r["status"] == "blowup"})
         for lab, dt, scale in blown[:8]:
             lines.append(f"  blew up: {lab} at dt {dt} s, stiffness x{scale}")

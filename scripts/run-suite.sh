@@ -5,7 +5,9 @@
 #   out/gate.json   the tolerance gates
 #   out/energy/     energy drift of every integrator and engine, undamped and damped
 #   out/sweep/      speed/accuracy and convergence sweeps
-#   out/stability/  largest stable steps against theory, and the extremes
+#   out/stability/  largest stable steps against theory (the oscillator, and every engine on
+#                   the chain and the cloth), and the extremes
+#   out/recommend/  the cheapest engine, integrator and step under 1 mm of error, per sweep
 #   out/report/     report.pdf and one PNG per figure
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -31,6 +33,13 @@ done
 
 for spec in compare/sweeps/*.json; do
   $B sweep "$spec" --out "$OUT/sweep/$(basename "$spec" .json).csv"
+done
+# The answer users want, for the report's first page: the cheapest choice under 1 mm of error on
+# each sweep measured against one converged reference (exit 1 when nothing qualifies: a result).
+mkdir -p "$OUT/recommend"
+for table in "$OUT"/sweep/chain_convergence.csv "$OUT"/sweep/cloth_speed_accuracy.csv; do
+  $B recommend "$table" --max-error 1e-3 --json "$OUT/recommend/$(basename "$table" .csv).json" \
+    >/dev/null || [ $? -eq 1 ]
 done
 $B stability --out "$OUT/stability" --extremes >/dev/null
 # Every engine's stability map on the chain and the cloth, with the w_max theory lines (the

@@ -30,7 +30,7 @@ for table in "$work/compare/comparison.json" "$work/suite/pendulum/comparison.js
 done
 
 builtin=$("$exe" list "$work/scenes" | sed -n '/^Engines:/,/^Scenes/p' | sed -n 's/^  \([^ []*\).*/\1/p')
-for command in run compare suite gate sweep list view; do
+for command in run compare suite gate sweep stability recommend list view; do
   help=$("$exe" "$command" --help 2>&1 || true)
   [[ "$help" == *"requires"* || "$help" == *"A subcommand"* ]] && continue  # view without a viewer
   for engine in $builtin; do

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   springcheck::addGateCommand(app, exit_code);
   springcheck::addSweepCommands(app, exit_code);
   springcheck::addStabilityCommand(app, exit_code);
+  springcheck::addRecommendCommand(app, exit_code);
   springcheck::addReportCommand(app, exit_code);
 #ifdef SPRINGCHECK_HAS_VIEWER
   springcheck::addViewCommand(app, exit_code);

@@ -108,6 +108,19 @@ def figure_summary(results, sweeps, stability, extremes):
         measured = "n/a" if c["measured"] is None else f"{c['measured']:.3g}"
         lines.append(f"  {os.path.basename(c['scene']):22s} {c['metric']:18s} {' ~ '.join(c['engines']):40s} {measured}")
     lines.append("")
+    # Momentum: the free-floating scenes of the suite, where nothing outside acts.
+    suite_dir = os.path.join(results, "suite")
+    for scene in sorted(os.listdir(suite_dir)) if os.path.isdir(suite_dir) else []:
+        path = os.path.join(suite_dir, scene, "comparison.json")
+        if not os.path.exists(path):
+            continue
+        engines = [e for e in json.load(open(path))["engines"] if e.get("linear_momentum_drift") is not None]
+        if engines:
+            lines.append(f"Momentum drift on {scene} (free body; relative, max over the run):")
+            for e in engines:
+                lines.append(f"  {e['engine']:24s} linear {e['linear_momentum_drift']:9.2g}   "
+                             f"angular {e['angular_momentum_drift']:9.2g}")
+    lines.append("")
     for name, rows in sweeps.items():
         lines.append(f"Sweep {name}: {len(rows)} runs, {sum(r['status'] == 'blowup' for r in rows)} blew up")
         blown = sorted({(label_of(r), r["dt"], r["stiffness_scale"]) for r in rows if r["status"] == "blowup"})

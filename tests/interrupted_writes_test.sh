@@ -30,7 +30,7 @@ cat > "$sweep_spec" <<JSON
 {"scenes": ["$src/scenes/seed/circle.json"], "integrators": ["euler", "rk4", "trapezoidal"],
  "dt": [0.1, 0.05, 0.025, 0.0125], "duration": 3.0, "sample_interval": 0.1, "reference": "closed_form"}
 JSON
-sweep=(sweep "$sweep_spec" --out "$work/sweep.csv" --fresh --jobs 1)
+sweep=(sweep "$sweep_spec" --out "$work/sweep.csv" --fresh --jobs 1 --repeats 1)
 
 for job in stability compare sweep; do
   case $job in

@@ -59,8 +59,11 @@ int sweep(const SweepCommandOptions& o) {
     return kFailure;
   }
   std::cout << "sweep " << spec->name << ": " << *ran << " runs now (shard " << o.shard << " of "
-            << total << " cases, " << options.jobs << " jobs; timed alone, fastest of " << options.repeats
-            << " rounds) -> " << out << '\n';
+            << total << " cases, " << options.jobs << " jobs; "
+            << (options.repeats > 1 ? "timed alone, fastest of " + std::to_string(options.repeats) +
+                                          " rounds"
+                                    : std::string("timed once, cases side by side"))
+            << ") -> " << out << '\n';
   return kOk;
 }
 

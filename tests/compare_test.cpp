@@ -256,5 +256,28 @@ TEST(RunStatus, LinearSolvesThatStopShortAreAStatusNotJustACount) {
   EXPECT_EQ(fine->status(), "ok");
 }
 
+// Runs whose durations are not whole multiples of their steps end at different times, each with
+// a last frame of its own: the distance is taken over the times both sampled.
+TEST(TrajectoryDistance, IsTakenOverTheTimesBothRunsSampled) {
+  auto record = [](std::vector<double> times, double offset) {
+    mysim::RunRecord r;
+    r.times = times;
+    for (double t : times) {
+      mysim::ParticleRows f = mysim::ParticleRows::Zero(2, 6);
+      f(0, 0) = t + offset;
+      f(1, 0) = t + offset;
+      r.frames.push_back(f);
+    }
+    return r;
+  };
+  const mysim::RunRecord a = record({0.0, 0.16, 0.32, 0.34}, 0.0);
+  const mysim::RunRecord b = record({0.0, 0.16, 0.32, 0.3412}, 0.01);
+  const auto d = trajectoryDistance(a, b);
+  ASSERT_TRUE(d);
+  EXPECT_NEAR(d->max_rms, 0.01, 1e-15);   // every shared frame is 0.01 apart
+  EXPECT_NEAR(d->last_rms, 0.01, 1e-15);  // the last shared time, 0.32
+  EXPECT_FALSE(trajectoryDistance(record({0.05}, 0.0), record({0.07}, 0.0)));
+}
+
 }  // namespace
 }  // namespace springcheck

@@ -78,18 +78,27 @@ PairMetrics pairMetrics(const mysim::Scene& scene, const mysim::Model& model, co
 
 std::optional<TrajectoryDistance> trajectoryDistance(const mysim::RunRecord& a,
                                                      const mysim::RunRecord& b) {
+  // Frames at the times both runs sampled (runs whose durations are not whole multiples of their
+  // steps end at different times and add a last frame of their own: those are skipped).
   const auto& ta = a.times;
   const auto& tb = b.times;
-  if (ta.empty() || ta.size() != tb.size() ||
-      !std::equal(ta.begin(), ta.end(), tb.begin(),
-                  [](double x, double y) { return std::abs(x - y) < 1e-9; })) {
-    return std::nullopt;
-  }
+  auto same = [](double x, double y) { return std::abs(x - y) <= 1e-9 * std::max(1.0, std::abs(x)); };
   TrajectoryDistance d;
-  for (std::size_t f = 0; f < ta.size(); ++f) {
-    d.last_rms = nodeDistance(a.frames[f].leftCols<3>(), b.frames[f].leftCols<3>()).rms;
-    d.max_rms = std::max(d.max_rms, d.last_rms);
+  bool any = false;
+  for (std::size_t i = 0, j = 0; i < ta.size() && j < tb.size();) {
+    if (same(ta[i], tb[j])) {
+      d.last_rms = nodeDistance(a.frames[i].leftCols<3>(), b.frames[j].leftCols<3>()).rms;
+      d.max_rms = std::max(d.max_rms, d.last_rms);
+      any = true;
+      ++i;
+      ++j;
+    } else if (ta[i] < tb[j]) {
+      ++i;
+    } else {
+      ++j;
+    }
   }
+  if (!any) return std::nullopt;
   return d;
 }
 

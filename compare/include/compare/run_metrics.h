@@ -52,12 +52,12 @@ struct PairMetrics {
   NodeDistance drape;           // last frames, node i against node i
   SurfaceDistance surface;      // last frames, topology-free
   double sag_difference = 0.0;  // |sag_lowest(a) - sag_lowest(b)|, m
-  // Max over frames of the per-frame RMS node distance; only when both sampled the same times.
+  // Max over the frames both sampled of the per-frame RMS node distance.
   std::optional<double> trajectory_rms_max;
 };
 
-// Max over frames and last frame of the RMS node distance between two runs sampled at the same
-// times (nothing when their frame times differ).
+// Max over frames and last frame of the RMS node distance between two runs, over the times both
+// sampled (nothing when they share none).
 struct TrajectoryDistance {
   double max_rms = 0.0;
   double last_rms = 0.0;

@@ -1,23 +1,32 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <tuple>
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
 #include "compare/atomic_file.h"
 #include "compare/gate.h"
+#include "compare/gate_report_formats.h"
 
 namespace springcheck {
 
 void addGateCommand(CLI::App& app, int& exit_code) {
   auto path = std::make_shared<std::string>("compare/tolerances.json");
   auto json_out = std::make_shared<std::string>();
+  auto junit_out = std::make_shared<std::string>();
+  auto markdown_out = std::make_shared<std::string>();
   auto engines_files = std::make_shared<std::vector<std::string>>();
   CLI::App* cmd = app.add_subcommand("gate", "Check every bound of a tolerances file");
   cmd->add_option("--tolerances", *path, "Tolerances file")->capture_default_str();
   cmd->add_option("--json", *json_out, "Also write every check's result to this JSON file");
+  cmd->add_option("--junit", *junit_out,
+                  "Also write JUnit XML here: one test case per check, failures with the "
+                  "measured value, the bound and its reason (for CI systems)");
+  cmd->add_option("--markdown", *markdown_out,
+                  "Also write a markdown table here (failures first), for a pull-request comment");
   addEnginesFileOption(cmd, *engines_files);
-  cmd->callback([path, json_out, engines_files, &exit_code] {
+  cmd->callback([path, json_out, junit_out, markdown_out, engines_files, &exit_code] {
     std::optional<EngineRegistry> registry = makeRegistry(*engines_files);
     if (!registry) {
       exit_code = kBadInput;
@@ -49,6 +58,18 @@ void addGateCommand(CLI::App& app, int& exit_code) {
               *json_out, [&](std::ostream& out) { out << all.dump(2) << '\n'; });
           !written) {
         std::cerr << "error: --json: " << written.error() << '\n';
+        exit_code = kFailure;
+        return;
+      }
+    }
+    for (const auto& [file, flag, write] :
+         {std::tuple{*junit_out, "--junit", &writeJunit},
+          std::tuple{*markdown_out, "--markdown", &writeGateMarkdown}}) {
+      if (file.empty()) continue;
+      if (auto written = writeFileAtomically(
+              file, [&](std::ostream& out) { write(out, report, *path); });
+          !written) {
+        std::cerr << "error: " << flag << ": " << written.error() << '\n';
         exit_code = kFailure;
         return;
       }

@@ -4,12 +4,15 @@
 #include <iostream>
 
 #include "commands.h"
+#include "springcheck_commit.h"
 
 int main(int argc, char** argv) {
   // A reader that goes away (`springcheck stability | head`) must not kill the run halfway: the
   // results it writes are files, written whole; only the printing is lost.
   std::signal(SIGPIPE, SIG_IGN);
   CLI::App app{"springcheck: a validation suite for mass-spring physics"};
+  app.set_version_flag("--version", std::string("springcheck ") + SPRINGCHECK_VERSION + " (commit " +
+                                         SPRINGCHECK_COMMIT + ")");
   app.require_subcommand(1);
   int exit_code = springcheck::kOk;
   springcheck::addRunCommand(app, exit_code);

@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 
 packages=(cmake g++ make pkg-config libbullet-dev libeigen3-dev googletest libgtest-dev
           libbenchmark-dev nlohmann-json3-dev libcli11-dev python3-matplotlib python3-numpy
-          libglfw3-dev libgl-dev libgl1-mesa-dri xvfb xauth)
+          libglfw3-dev libgl-dev libgl1-mesa-dri xvfb xauth help2man)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

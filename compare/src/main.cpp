@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
 #ifdef SPRINGCHECK_HAS_VIEWER
   springcheck::addViewCommand(app, exit_code);
 #endif
+  springcheck::addCompletionCommand(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -168,17 +168,17 @@ std::expected<mysim::RunRecord, EngineError> EngineRegistry::run(const std::stri
     walls.push_back(again->wall_seconds);
     record->threads = std::max(record->threads, again->threads);
   }
-  setRepeatTimes(*record, std::move(walls));
+  record->repeats = static_cast<int>(walls.size());
+  const RepeatTimes times = repeatTimes(std::move(walls));
+  record->wall_seconds = times.fastest;
+  record->wall_median_seconds = times.median;
   return record;
 }
 
-void setRepeatTimes(mysim::RunRecord& record, std::vector<double> walls) {
+RepeatTimes repeatTimes(std::vector<double> walls) {
   std::sort(walls.begin(), walls.end());
-  record.repeats = static_cast<int>(walls.size());
-  record.wall_seconds = walls.front();
   const std::size_t half = walls.size() / 2;
-  record.wall_median_seconds =
-      walls.size() % 2 ? walls[half] : 0.5 * (walls[half - 1] + walls[half]);
+  return {walls.front(), walls.size() % 2 ? walls[half] : 0.5 * (walls[half - 1] + walls[half])};
 }
 
 std::expected<mysim::RunRecord, EngineError> EngineRegistry::run(const std::string& spec,

@@ -19,9 +19,8 @@ double numberOr(const std::string& text, double fallback) {
 
 std::vector<Recommendation> recommend(const std::vector<SweepRow>& rows, double max_error,
                                       Cost cost) {
-  const auto& cols = sweepColumns();
-  auto at = [&](const SweepRow& row, const char* name) -> const std::string& {
-    return row[static_cast<std::size_t>(std::find(cols.begin(), cols.end(), name) - cols.begin())];
+  auto at = [](const SweepRow& row, const char* name) -> const std::string& {
+    return row[sweepColumn(name)];
   };
   std::vector<std::pair<std::string, double>> order;  // groups in the table's order
   std::map<std::pair<std::string, double>, std::vector<Choice>> groups;

@@ -125,8 +125,6 @@ std::expected<void, std::string> writeExtremes(const EngineRegistry& registry,
   return writeFileAtomically(path, [&](std::ostream& file) { file << out.str(); });
 }
 
-std::string quoted(const std::string& text) { return csvField(text); }
-
 // Every engine's largest stable step on a scene, across stiffness and mass ratios, next to the
 // theory line c / w_max: out/stability_SCENE.csv.
 int sceneStabilityMaps(const StabilityOptions& o, const EngineRegistry& registry,
@@ -198,10 +196,10 @@ int sceneStabilityMaps(const StabilityOptions& o, const EngineRegistry& registry
     }
     const std::optional<double> hw =
         l.status == "bracketed" ? std::optional(l.h_stable * l.w_max) : std::nullopt;
-    out << quoted(scene.name) << ',' << quoted(cells[k].engine) << ','
+    out << csvField(scene.name) << ',' << csvField(cells[k].engine) << ','
         << (cells[k].classic_iterations ? std::to_string(cells[k].classic_iterations) : "") << ','
         << cells[k].k << ',' << cells[k].ratio << ',' << l.w_max << ',' << l.h_stable << ','
-        << l.h_unstable << ',' << l.status << ',' << quoted(l.unstable_check) << ','
+        << l.h_unstable << ',' << l.status << ',' << csvField(l.unstable_check) << ','
         << cell(l.theory) << ',' << cell(ratio) << ',' << cell(hw) << '\n';
     std::printf("%-24s %4s %9.3g %7.3g %11.4g %11.4g %11s %7s %7s  %s%s%s\n",
                 cells[k].engine.c_str(),

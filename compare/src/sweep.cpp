@@ -188,6 +188,11 @@ std::expected<CaseRun, std::string> caseRun(const SweepSpec& spec, const SweepCa
   return run;
 }
 
+std::size_t sweepColumn(std::string_view name) {
+  const auto& cols = sweepColumns();
+  return static_cast<std::size_t>(std::find(cols.begin(), cols.end(), name) - cols.begin());
+}
+
 const std::vector<std::string>& sweepColumns() {
   static const std::vector<std::string> columns = {"case_id",
                                                    "scene",
@@ -227,10 +232,6 @@ namespace {
 
 constexpr int kParameterColumns = 7;  // case_id .. tolerance
 
-std::size_t columnIndex(const std::string& name) {
-  const auto& cols = sweepColumns();
-  return static_cast<std::size_t>(std::find(cols.begin(), cols.end(), name) - cols.begin());
-}
 
 // The run a case is measured against: the spec's converged run per scene and stiffness, or
 // (reference_self) the case's own engine, integrator and tolerance at the finest step / refine.
@@ -266,8 +267,7 @@ SweepRow runCase(const EngineRegistry& registry, const SweepSpec& spec, const Sw
                   c.tolerance > 0 ? number(c.tolerance) : ""};
   row.resize(sweepColumns().size());
   auto set = [&](const std::string& column, const std::string& value) {
-    const auto& cols = sweepColumns();
-    row[std::find(cols.begin(), cols.end(), column) - cols.begin()] = value;
+    row[sweepColumn(column)] = value;
   };
   auto run = caseRun(spec, c);
   if (!run) {
@@ -332,7 +332,7 @@ SweepRow runCase(const EngineRegistry& registry, const SweepSpec& spec, const Sw
         (spec.reference_self ? std::string("self") : spec.reference_integrator) + " at dt/" +
         std::to_string(spec.reference_refine);
     if (it != references.end() && !it->second) {
-      set("note", row[columnIndex("note")] + (row[columnIndex("note")].empty() ? "" : "; ") +
+      set("note", row[sweepColumn("note")] + (row[sweepColumn("note")].empty() ? "" : "; ") +
                       "no " + label + " reference: " + it->second.error());
     } else if (it != references.end()) {
       if (auto d = trajectoryDistance(r, *it->second)) {
@@ -358,13 +358,13 @@ void retimeRows(const EngineRegistry& registry, const SweepSpec& spec,
   for (SweepRow& row : rows) row_of[std::stoi(row[0])] = &row;
   std::vector<const SweepCase*> timed;  // the cases that ran (a refusal has no time)
   for (const SweepCase& c : cases) {
-    if (!row_of[c.id]->at(columnIndex("wall_seconds")).empty()) timed.push_back(&c);
+    if (!row_of.at(c.id)->at(sweepColumn("wall_seconds")).empty()) timed.push_back(&c);
   }
   std::vector<std::vector<double>> walls(timed.size());
   std::vector<int> threads(timed.size(), 1);
   for (std::size_t k = 0; first_round_counts && k < timed.size(); ++k) {
-    walls[k].push_back(std::stod(row_of[timed[k]->id]->at(columnIndex("wall_seconds"))));
-    threads[k] = std::stoi(row_of[timed[k]->id]->at(columnIndex("threads")));
+    walls[k].push_back(std::stod(row_of[timed[k]->id]->at(sweepColumn("wall_seconds"))));
+    threads[k] = std::stoi(row_of[timed[k]->id]->at(sweepColumn("threads")));
   }
   const int total = rounds * static_cast<int>(timed.size());
   for (int round = 0; round < rounds; ++round) {
@@ -387,15 +387,14 @@ void retimeRows(const EngineRegistry& registry, const SweepSpec& spec,
   for (std::size_t k = 0; k < timed.size(); ++k) {
     if (walls[k].empty()) continue;  // no timing run succeeded: the first round's time stays
     SweepRow& row = *row_of[timed[k]->id];
-    mysim::RunRecord times;
-    times.times = {0.0, std::stod(row[columnIndex("steps")]) * timed[k]->dt};
-    setRepeatTimes(times, walls[k]);
-    row[columnIndex("wall_seconds")] = number(times.wall_seconds);
-    row[columnIndex("wall_median_seconds")] = number(times.wall_median_seconds);
-    row[columnIndex("realtime_factor")] = number(times.realtimeFactor());
-    row[columnIndex("repeats")] = std::to_string(times.repeats);
-    row[columnIndex("threads")] = std::to_string(threads[k]);
-    row[columnIndex("jobs")] = "1";  // timed one at a time
+    const RepeatTimes times = repeatTimes(walls[k]);
+    const double simulated = std::stod(row[sweepColumn("steps")]) * timed[k]->dt;
+    row[sweepColumn("wall_seconds")] = number(times.fastest);
+    row[sweepColumn("wall_median_seconds")] = number(times.median);
+    row[sweepColumn("realtime_factor")] = number(simulated / times.fastest);
+    row[sweepColumn("repeats")] = std::to_string(walls[k].size());
+    row[sweepColumn("threads")] = std::to_string(threads[k]);
+    row[sweepColumn("jobs")] = "1";  // timed one at a time
   }
 }
 
@@ -541,9 +540,9 @@ std::expected<int, std::string> runSweep(const EngineRegistry& registry, const S
   for (int t = 0; t < std::max(1, options.jobs); ++t) threads.emplace_back(work);
   for (std::thread& t : threads) t.join();
   out.close();
-  // Timing rounds: every case of this sweep again, `repeats - 1` more times, round after round
-  // rather than back to back, so a slow spell of the machine (seconds long on a shared VM) costs
-  // one sample of many cases instead of every sample of one.
+  // Timing rounds: the cases of this sweep again, one at a time, round after round rather than
+  // back to back, so a slow spell of the machine (seconds long on a shared VM) costs one sample of
+  // many cases instead of every sample of one.
   retimeRows(registry, spec, todo, options, kept);
   if (auto written = writeSorted(out_csv, kept); !written) return std::unexpected(written.error());
   std::error_code ec;

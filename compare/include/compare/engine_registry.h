@@ -118,8 +118,11 @@ class EngineRegistry {
   std::vector<std::string> engines_files_;
 };
 
-// The wall times of identical runs into `record`: the fastest, the median and their count.
-void setRepeatTimes(mysim::RunRecord& record, std::vector<double> walls);
+// The wall times of identical runs: the fastest and the median (of at least one).
+struct RepeatTimes {
+  double fastest = 0.0, median = 0.0;
+};
+RepeatTimes repeatTimes(std::vector<double> walls);
 
 // "a, b, c": the registered names, for help texts and messages.
 std::string engineList(const EngineRegistry& registry);

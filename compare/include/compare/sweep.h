@@ -4,6 +4,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "compare/engine_registry.h"
@@ -72,6 +73,8 @@ struct CaseRun {
 // Results table: one row per case, in this column order.
 const std::vector<std::string>& sweepColumns();
 using SweepRow = std::vector<std::string>;  // values in sweepColumns() order
+// A column's place in a row (sweepColumns().size() for a name that is none).
+std::size_t sweepColumn(std::string_view name);
 
 struct SweepOptions {
   int jobs = 1;

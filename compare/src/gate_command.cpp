@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "data_dir.h"
 #include "compare/atomic_file.h"
 #include "compare/gate.h"
 #include "compare/gate_report_formats.h"
@@ -12,7 +13,7 @@
 namespace springcheck {
 
 void addGateCommand(CLI::App& app, int& exit_code) {
-  auto path = std::make_shared<std::string>("compare/tolerances.json");
+  auto path = std::make_shared<std::string>(dataFile("compare/tolerances.json"));
   auto json_out = std::make_shared<std::string>();
   auto junit_out = std::make_shared<std::string>();
   auto markdown_out = std::make_shared<std::string>();

@@ -5,11 +5,12 @@
 #include <memory>
 
 #include "commands.h"
+#include "data_dir.h"
 
 namespace springcheck {
 namespace {
 
-// Runs reports/make_report.py with the interpreter CMake found to have matplotlib: C++ writes
+// Runs reports/make_report.py (found beside the executable, data_dir.h) with the interpreter CMake found to have matplotlib: C++ writes
 // the tables, Python only draws them.
 int report(const std::string& results, const std::string& out) {
   const std::string python = SPRINGCHECK_PYTHON;
@@ -18,9 +19,15 @@ int report(const std::string& results, const std::string& out) {
                  "configured; install python3-matplotlib python3-numpy and re-run cmake\n";
     return kFailure;
   }
+  const std::string script = dataFile("reports/make_report.py");
+  if (access(script.c_str(), R_OK) != 0) {
+    std::cerr << "error: the report script " << script
+              << " is missing (set SPRINGCHECK_DATA_DIR to the folder holding reports/)\n";
+    return kFailure;
+  }
   const pid_t child = fork();
   if (child == 0) {
-    execl(python.c_str(), python.c_str(), SPRINGCHECK_REPORT_SCRIPT, "--results", results.c_str(),
+    execl(python.c_str(), python.c_str(), script.c_str(), "--results", results.c_str(),
           "--out", out.c_str(), static_cast<char*>(nullptr));
     _exit(127);
   }

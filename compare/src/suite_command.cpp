@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "commands.h"
+#include "data_dir.h"
 #include "compare/comparison.h"
 #include "compare/gate.h"
 #include "compare/scene_files.h"
@@ -11,7 +12,7 @@ namespace springcheck {
 namespace {
 
 struct SuiteOptions {
-  std::string dir = "scenes";
+  std::string dir = dataFile("scenes");
   std::string out = "out/suite";
   std::vector<std::string> engines_files;
   Timing timing;

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "commands.h"
+#include "data_dir.h"
 #include "viewer/window.h"
 
 namespace springcheck {
@@ -31,9 +32,12 @@ int view(const ViewOptions& o) {
     return kBadInput;
   }
   // The scenes `t` cycles through: the seed's systems and the cloth on the sphere.
-  std::vector<std::string> scenes = {
-      "scenes/seed/circle.json", "scenes/seed/pendulum.json", "scenes/matched/chain_swing.json",
-      "scenes/matched/cloth_hanging.json", "scenes/matched/cloth_on_sphere.json"};
+  // They come with springcheck (data_dir.h), so the cycle works from any folder.
+  std::vector<std::string> scenes;
+  for (const char* name : {"seed/circle", "seed/pendulum", "matched/chain_swing",
+                           "matched/cloth_hanging", "matched/cloth_on_sphere"}) {
+    scenes.push_back(dataFile("scenes/" + std::string(name) + ".json"));
+  }
   if (!o.integrator.empty()) {
     if (auto ok = mysim::canonicalIntegratorName(o.integrator); !ok) {
       std::cerr << "error: --integrator: " << ok.error() << '\n';

@@ -7,18 +7,7 @@ cd "$(dirname "$0")/.."
 packages=(cmake g++ make pkg-config libbullet-dev libeigen3-dev googletest libgtest-dev
           libbenchmark-dev nlohmann-json3-dev libcli11-dev python3-matplotlib python3-numpy
           libglfw3-dev libgl-dev libgl1-mesa-dri xvfb xauth help2man)
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  echo "setup: installing ${missing[*]}"
-  sudo_cmd=()
-  [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
-  "${sudo_cmd[@]}" apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends \
-    "${missing[@]}" >/dev/null
-fi
+scripts/install-packages.sh "${packages[@]}"
 
 preset=${1:-default}
 shift || true

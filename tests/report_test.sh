@@ -1,29 +1,67 @@
 #!/usr/bin/env bash
-# Builds the report from small result tables made by the real commands, and checks that every
-# expected figure and the PDF exist and are not empty.
+# Builds the report from small result tables made by the real commands, with an external engine
+# (examples/external's pysim) and a user's own scene among them, and checks that every page the
+# manifest calls for exists, one PNG per PDF page, stamped; then that a results folder missing
+# most inputs still gives a report, whose last page names the command for each missing input.
 # Usage: report_test.sh SPRINGCHECK SOURCE_DIR WORK_DIR
 set -euo pipefail
 B=$1 SRC=$2 OUT=$3
 rm -rf "$OUT"
-mkdir -p "$OUT/sweep"
+mkdir -p "$OUT/sweep" "$OUT/recommend"
 cd "$SRC"
+fail() { echo "FAIL: $*"; exit 1; }
+E=examples/external/engines.json
+# The user's scene: a small cloth of their own, outside scenes/.
+python3 - "$OUT/user_cloth.json" <<'PY'
+import json, sys
+scene = json.load(open("scenes/matched/cloth_hanging.json"))
+scene["name"] = "user_cloth"
+scene["system"]["rows"] = scene["system"]["cols"] = 6
+scene["integrator"]["duration"] = 1.0
+json.dump(scene, open(sys.argv[1], "w"))
+PY
 $B gate --tolerances tests/data/report_tolerances.json --json "$OUT/gate.json" >/dev/null
 $B sweep tests/data/report_sweep.json --out "$OUT/sweep/small_convergence.csv" --jobs 2 --repeats 1 >/dev/null 2>&1
+$B recommend "$OUT/sweep/small_convergence.csv" --max-error 1e-3 --json "$OUT/recommend/small_convergence.json" \
+  >/dev/null || [ $? -eq 1 ]
 $B stability --integrators rk4,verlet,backward-euler --stiffness 10,100 --masses 1 \
   --out "$OUT/stability" --extremes --jobs 2 >/dev/null 2>&1
+$B stability --scene scenes/matched/chain_hanging.json --engines mysim:symplectic-euler,bullet-deformable \
+  --stiffness 10,100 --mass-ratios 1,100 --out "$OUT/stability" --jobs 2 >/dev/null 2>&1
 for scene in chain_swing chain_hanging; do
-  $B compare "scenes/matched/$scene.json" --engines mysim,mysim:symplectic-euler,bullet-deformable \
-    --out "$OUT/energy/$scene" >/dev/null
+  $B compare "scenes/matched/$scene.json" --engines mysim,mysim:symplectic-euler,bullet-deformable,pysim \
+    --engines-file $E --out "$OUT/energy/$scene" >/dev/null
 done
-for scene in cloth_hanging cloth_on_sphere; do
-  $B compare "scenes/matched/$scene.json" --engines mysim,bullet-deformable --out "$OUT/suite/$scene" >/dev/null
+for scene in scenes/matched/cloth_on_sphere.json "$OUT/user_cloth.json"; do
+  name=$(basename "$scene" .json)
+  $B compare "$scene" --engines mysim,bullet-deformable,pysim --engines-file $E --out "$OUT/suite/$name" >/dev/null
 done
-$B report --results "$OUT" --out "$OUT/report"
-missing=0
-for figure in 01_summary 02_speed_accuracy 03_convergence 04_stability_map 05_energy_drift 06_drape 07_sag_penetration; do
-  if [ ! -s "$OUT/report/$figure.png" ]; then echo "missing or empty: $figure.png"; missing=1; fi
+$B report --results "$OUT" --out "$OUT/report" || fail "springcheck report failed"
+
+# Every page the inputs call for, by name; pysim and the user's scene among them.
+for page in dashboard speed_accuracy_small_convergence convergence_small_convergence stability_oscillator \
+            stability_chain_hanging energy_energy_chain_swing energy_energy_chain_hanging \
+            drape_suite_cloth_on_sphere drape_suite_user_cloth sag_1 penetration_1; do
+  ls "$OUT/report/"[0-9][0-9]_"$page.png" >/dev/null 2>&1 || fail "no page $page"
 done
-[ -s "$OUT/report/report.pdf" ] || { echo "missing or empty: report.pdf"; missing=1; }
+for png in "$OUT"/report/*.png; do [ -s "$png" ] || fail "empty $png"; done
+ls "$OUT"/report/*missing_inputs.png >/dev/null 2>&1 && fail "a missing-inputs page although every input exists"
+pngs=$(ls "$OUT"/report/*.png | wc -l)
 pages=$(grep -c "/Type /Page\b" "$OUT/report/report.pdf" || true)
-[ "$pages" -eq 7 ] || { echo "report.pdf has $pages pages, expected 7"; missing=1; }
-exit $missing
+[ "$pages" -eq "$pngs" ] || fail "report.pdf has $pages pages, $pngs PNGs"
+grep -q '"pysim"' "$OUT/report/manifest.json" || fail "the manifest does not list the external engine"
+grep -q '"user_cloth"' "$OUT/report/manifest.json" || fail "the manifest does not list the user's scene"
+grep -q '"commit"' "$OUT/report/manifest.json" || fail "the manifest has no stamp"
+echo "report: $pages pages, each page present"
+
+# A folder with a single comparison: the report still comes, and says what makes the rest.
+mkdir -p "$OUT/partial/suite"
+cp -r "$OUT/suite/user_cloth" "$OUT/partial/suite/"
+$B report --results "$OUT/partial" --out "$OUT/partial/report" 2>"$OUT/partial/stderr" \
+  || { cat "$OUT/partial/stderr"; fail "report failed on a partial results folder"; }
+grep -q "Traceback" "$OUT/partial/stderr" && fail "a Python traceback"
+ls "$OUT"/partial/report/*_missing_inputs.png >/dev/null 2>&1 || fail "no page of missing inputs"
+for command in "springcheck gate --json" "springcheck sweep" "springcheck stability --extremes" "springcheck compare"; do
+  grep -qF "$command" "$OUT/partial/report/manifest.json" || fail "the missing inputs do not name '$command'"
+done
+echo "partial results: the report names the commands for the missing inputs"

@@ -154,6 +154,25 @@ std::string safeDirName(std::string engine) {
   return engine;
 }
 
+// What a reader of the tables needs to know of the model (the report draws the sphere, picks the
+// energy view for undamped or damped scenes, and draws cloths as meshes).
+json modelJson(const mysim::Model& model) {
+  bool spring_damping = false;
+  for (const mysim::Spring& s : model.springs) spring_damping |= s.damping > 0.0;
+  json j = {{"kind", mysim::systemKindName(model.kind)},
+            {"particles", model.particleCount()},
+            {"damped", model.drag > 0.0 || spring_damping},
+            {"driven", model.wind.has_value() || model.pin_motion.has_value()},
+            {"sphere", json()},
+            {"grid", json()}};
+  if (model.sphere) {
+    const mysim::Vec3& c = model.sphere->center;
+    j["sphere"] = {{"center", {c.x(), c.y(), c.z()}}, {"radius", model.sphere->radius}};
+  }
+  if (model.grid) j["grid"] = {{"rows", model.grid->rows}, {"cols", model.grid->cols}};
+  return j;
+}
+
 }  // namespace
 
 std::expected<void, std::string> writeComparison(const std::string& dir, const Comparison& c) {
@@ -261,7 +280,14 @@ std::expected<void, std::string> writeComparison(const std::string& dir, const C
   for (const Comparison::Refusal& r : c.refused) {
     j["refused"].push_back({{"engine", r.engine}, {"reason", r.reason}});
   }
-  for (const EngineMetrics& m : c.engines) j["engines"].push_back(metricsJson(m));
+  j["model"] = modelJson(c.model);
+  for (std::size_t r = 0; r < c.engines.size(); ++r) {
+    json e = metricsJson(c.engines[r]);
+    // Where its run files are, and what stepped it (the scene's integrator for plain "mysim").
+    e["folder"] = safeDirName(c.engines[r].engine);
+    if (r < c.runs.size()) e["integrator"] = c.runs[r].record.integrator;
+    j["engines"].push_back(e);
+  }
   for (const PairMetrics& p : c.pairs) j["pairs"].push_back(pairJson(p));
   return writeFileAtomically(in("comparison.json"),
                              [&](std::ostream& out) { out << j.dump(2) << '\n'; });

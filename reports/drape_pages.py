@@ -1,0 +1,120 @@
+"""The settled cloth: its shape in true proportions, the sphere under it, and where each engine
+puts each node relative to the first engine."""
+import math
+from collections import defaultdict
+
+import numpy as np
+from matplotlib import cm, colors
+from matplotlib.patches import Circle
+from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+from report_style import Page, number, plot_area, read_csv
+
+
+def read_faces(path):
+    faces = []
+    with open(path) as f:
+        for line in f:
+            if line.startswith("f "):
+                faces.append([int(v.split("/")[0]) - 1 for v in line.split()[1:4]])
+    return np.array(faces, dtype=int)
+
+
+def positions(path):
+    return np.array([[number(r["x"]), number(r["y"]), number(r["z"])] for r in read_csv(path)])
+
+
+def equal_aspect_3d(ax, points):
+    """Axes in true proportions (simulation y is drawn up)."""
+    lo, hi = points.min(axis=0), points.max(axis=0)
+    span = np.maximum(hi - lo, 1e-3 * max(hi - lo))
+    ax.set_xlim(lo[0], hi[0])
+    ax.set_ylim(lo[2], hi[2])
+    ax.set_zlim(lo[1], hi[1])
+    ax.set_box_aspect((span[0], span[2], span[1]))
+
+
+def sphere_points(sphere, n=24):
+    u, v = np.meshgrid(np.linspace(0, 2 * math.pi, n), np.linspace(0, math.pi, n // 2))
+    c, r = sphere["center"], sphere["radius"]
+    return c[0] + r * np.cos(u) * np.sin(v), c[1] + r * np.cos(v), c[2] + r * np.sin(u) * np.sin(v)
+
+
+def comparison_page(c):
+    sphere = c.get("model", {}).get("sphere")
+
+    def draw(fig, ctx):
+        runs = [e for e in c["engines"] if e.get("final_state") and e.get("final")]
+        distance = defaultdict(dict)
+        reference_name = runs[0]["name"]
+        if c.get("node_distance"):
+            for r in read_csv(c["node_distance"]):
+                distance[r["engine"]][int(r["node"])] = number(r["distance"])
+                reference_name = r["reference_engine"]
+        reference = next(e for e in runs if e["name"] == reference_name)
+        others = [e for e in runs if e["name"] in distance]
+        xyz = positions(reference["final_state"])
+        faces = read_faces(reference["final"])
+        values = [v for d in distance.values() for v in d.values() if v and v > 0]
+        norm = colors.LogNorm(vmin=max(min(values), 1e-12), vmax=max(values)) if values else None
+        cmap = cm.viridis
+        cols = 2 if len(others) > 1 else 1
+        rows = max(1, math.ceil(len(others) / cols))
+        grid = plot_area(fig, rows, 1 + cols, width_ratios=[2.2] + [1] * cols, wspace=0.3, hspace=0.35)
+        ax = fig.add_subplot(grid[:, 0], projection="3d")
+        worst = np.zeros(len(xyz))
+        for d in distance.values():
+            worst = np.maximum(worst, [d.get(n, 0.0) for n in range(len(xyz))])
+        if norm is not None:
+            face_colours = cmap(norm(np.maximum(worst[faces].mean(axis=1), norm.vmin)))
+        else:
+            face_colours = "lightgrey"
+        mesh = Poly3DCollection(xyz[faces][:, :, [0, 2, 1]], facecolors=face_colours, edgecolors="0.35",
+                                linewidths=0.15, alpha=0.95)
+        ax.add_collection3d(mesh)
+        points = xyz
+        if sphere:
+            sx, sy, sz = sphere_points(sphere)
+            ax.plot_wireframe(sx, sz, sy, color="0.5", lw=0.4, alpha=0.6)
+            points = np.vstack([xyz, np.column_stack([sx.ravel(), sy.ravel(), sz.ravel()])])
+        equal_aspect_3d(ax, points)
+        ax.set_xlabel("x [m]", fontsize=8)
+        ax.set_ylabel("z [m]", fontsize=8)
+        ax.set_zlabel("y [m]", fontsize=8)
+        ax.tick_params(labelsize=6)
+        ax.set_title(f"{reference_name}'s settled cloth, coloured by the largest distance of any engine",
+                     fontsize=8.5)
+        for i, e in enumerate(others):
+            top = fig.add_subplot(grid[i // cols, 1 + i % cols])
+            mine = positions(e["final_state"])
+            d = np.array([distance[e["name"]].get(n, 0.0) for n in range(len(mine))])
+            top.scatter(mine[:, 0], mine[:, 2], c=np.maximum(d, norm.vmin) if norm else d, cmap=cmap,
+                        norm=norm, s=10)
+            if sphere:
+                top.add_patch(Circle(
+                    (sphere["center"][0], sphere["center"][2]), sphere["radius"], fill=False,
+                    color="0.5", lw=0.8, linestyle="--"))
+            top.set_aspect("equal")
+            top.set_title(f"{e['name']}: max {max(d):.2g} m", fontsize=8)
+            top.tick_params(labelsize=6)
+            top.set_xlabel("x [m]", fontsize=7)
+            top.set_ylabel("z [m]", fontsize=7)
+        if norm is not None:
+            bar = fig.colorbar(cm.ScalarMappable(norm=norm, cmap=cmap), ax=fig.axes, shrink=0.6,
+                               location="right", pad=0.02)
+            bar.set_label(f"distance of a node to {reference_name}'s [m]", fontsize=8)
+        return [] if others else ["Only one engine finished: nothing to compare it with."]
+
+    return Page(f"drape_{c['group'].replace('/', '_')}_{c['scene']}",
+                f"Where do the engines disagree on the settled cloth? ({c['scene']})",
+                "Left: the last frame of the first engine in true proportions (equal axes), the sphere as a "
+                "wire frame where the scene has one, each triangle coloured by the largest distance any other "
+                "engine's node has from this one. Right: the same from above (x-z, looking down), one panel per "
+                "engine, each node coloured by its own distance (log colour scale, shared).", draw)
+
+
+def pages(manifest):
+    chosen = [c for c in manifest["comparisons"] if c.get("model", {}).get("kind") == "cloth"
+              and c["group"] != "energy"
+              and sum(1 for e in c["engines"] if e.get("final_state") and e.get("final")) >= 1]
+    return [comparison_page(c) for c in chosen]

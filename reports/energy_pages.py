@@ -1,0 +1,85 @@
+"""Energy: how far each engine's total energy wanders from what the physics allows."""
+from collections import defaultdict
+
+from report_style import Page, coincident, draw_coincidences, number, plot_area, read_csv
+
+# The series tables carry 10 significant digits: relative differences below ~1e-10 are rounding.
+FLOOR = 1e-11
+
+
+def engine_key(ctx, engine):
+    return ctx.styles.key(engine["name"], engine["integrator"] if engine["name"] == "mysim" else "")
+
+
+def label(engine):
+    plain = engine["name"] == "mysim" and engine["integrator"]
+    return engine["name"] + (f" ({engine['integrator']})" if plain else "")
+
+
+def comparison_page(c):
+    model = c.get("model", {})
+    damped = bool(model.get("damped"))
+    driven = bool(model.get("driven"))
+
+    def draw(fig, ctx):
+        ax = fig.add_subplot(plot_area(fig)[0, 0])
+        drift = defaultdict(dict)  # engine -> t -> relative drift
+        for r in read_csv(c["series"]):
+            value = number(r["energy_drift_total"])
+            if value is not None:
+                drift[r["engine"]][r["t"]] = value
+        engines = [e for e in c["engines"] if e["name"] in drift]
+        reference = None
+        if damped:
+            reference = next((e for e in engines if engine_key(ctx, e) == "mysim:rk4"), None)
+        notes, drawn = [], {}
+        for e in engines:
+            series = drift[e["name"]]
+            if reference is not None and e is not reference:
+                base = drift[reference["name"]]
+                pts = [(number(t), abs(v - base[t])) for t, v in series.items() if t in base]
+            elif reference is not None:
+                continue
+            else:
+                pts = [(number(t), abs(v)) for t, v in series.items()]
+            pts = sorted((t, max(v, FLOOR)) for t, v in pts)
+            kw = ctx.styles.line(engine_key(ctx, e))
+            kw["marker"] = None
+            drawn[label(e)] = (pts, kw)
+            ax.semilogy(*zip(*pts), label=label(e) + ("" if e["status"] == "ok" else f" [{e['status']}]"), **kw)
+            if e["status"] != "ok":
+                notes.append(f"{label(e)} stopped early ({e['status']}): its line ends there.")
+        notes += draw_coincidences(ax, coincident({k: v[0] for k, v in drawn.items()}),
+                                   lambda k: ([p[0] for p in drawn[k][0]], [p[1] for p in drawn[k][0]], drawn[k][1]),
+                                   markers=False)
+        ax.set_xlabel("time t [s]")
+        if reference is not None:
+            ax.set_ylabel(f"|energy balance - {label(reference)}'s| / E_ref [1]")
+        else:
+            ax.set_ylabel("|E(t) - E(0) - W(t)| / E_ref [1]")
+        ax.set_ylim(bottom=FLOOR)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7, ncol=3, loc="lower right")
+        return notes
+
+    scene = c["scene"]
+    if damped:
+        caption = ("A damped scene loses energy by physics, the same in every correct engine, so the plain "
+                   "energy curves lie on top of each other. Drawn instead: each engine's energy balance "
+                   "(E(t) - E(0) - W(t)) / E_ref minus that of mysim's RK4, the most accurate fixed-step run, on "
+                   "a log scale: how much energy each scheme adds or removes beyond the physical loss. The floor, "
+                   "1e-11, is the tables' rounding.")
+    else:
+        caption = ("Energy balance |E(t) - E(0) - W(t)| / E_ref on a log scale (W: work done from outside"
+                   + (", here by the scene's drivers" if driven else ", none here") + "; E_ref: the scene's "
+                   "energy scale). A flat band is bounded oscillation (symplectic methods); a line that keeps "
+                   "rising is drift; a line that ends has blown up.")
+    return Page(f"energy_{c['group'].replace('/', '_')}_{scene}",
+                f"Does each engine keep the energy it should? ({scene}, {'damped' if damped else 'undamped'})",
+                caption, draw)
+
+
+def pages(manifest):
+    chosen = [c for c in manifest["comparisons"] if c["group"] in ("energy", "compare") and c.get("series")
+              and c.get("model", {}).get("kind") != "circle"]
+    return [comparison_page(c) for c in chosen]

@@ -1,0 +1,24 @@
+"""The report's pages, in order: what the manifest holds decides which exist."""
+import dashboard
+import drape_pages
+import energy_pages
+import missing_page
+import performance_page
+import series_pages
+import stability_pages
+import trade_pages
+
+
+def pages(ctx):
+    m = ctx.manifest
+    result = dashboard.pages(ctx)
+    result += trade_pages.pages(m)
+    result += stability_pages.pages(m)
+    result += energy_pages.pages(m)
+    result += drape_pages.pages(m)
+    result += series_pages.pages(m)
+    if m.get("bench"):
+        result.append(performance_page.page(m["bench"]))
+    if m["missing"]:
+        result.append(missing_page.page(m["missing"]))
+    return result

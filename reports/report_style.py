@@ -1,0 +1,127 @@
+"""The report's look, in one place: page size and frame, and the style table that gives every
+series (engine, or mysim with an integrator) one colour and marker on every page."""
+import csv
+import math
+
+# Every page is A4 landscape.
+PAGE_SIZE = (11.69, 8.27)
+# Where a page's figure goes (left, bottom, right, top in figure fractions): the title above,
+# the caption and the stamp below.
+PLOT_RECT = (0.06, 0.22, 0.97, 0.88)
+
+# One row per built-in series. mysim's integrators keep their colours whatever engine name they
+# come under ("mysim" with the scene's integrator, or "mysim:NAME"); Bullet's engines are set
+# apart by their markers (crosses and stars) as well as colour.
+STYLES = {
+    "mysim:euler": ("#d62728", "v"),
+    "mysim:trapezoidal": ("#ff7f0e", "<"),
+    "mysim:rk4": ("#1f77b4", "o"),
+    "mysim:symplectic-euler": ("#2ca02c", "s"),
+    "mysim:verlet": ("#17becf", "D"),
+    "mysim:backward-euler": ("#9467bd", "^"),
+    "mysim:dopri5": ("#8c564b", "p"),
+    "bullet-deformable": ("#bcbd22", "X"),
+    "bullet-implicit": ("#e377c2", "P"),
+    "bullet-classic": ("#7f7f7f", "*"),
+}
+# The user's own engines, in the order of their names (the same in every page of one report).
+EXTERNAL_STYLES = [("#000000", "h"), ("#a0522d", "8"), ("#006400", "d"), ("#00008b", ">"),
+                   ("#8b008b", "H"), ("#b8860b", "1")]
+# Variants of one series (dopri5's tolerances, bullet-classic's iteration counts).
+LINESTYLES = ["-", "--", ":", "-."]
+
+
+class StyleTable:
+    def __init__(self, external_names=()):
+        self.external = {name: EXTERNAL_STYLES[i % len(EXTERNAL_STYLES)]
+                         for i, name in enumerate(sorted(set(external_names) - set(STYLES)))}
+
+    def key(self, engine, integrator=""):
+        """The style key of a series: 'mysim:rk4' for mysim (whatever its name), else the engine."""
+        if engine == "mysim" and integrator:
+            return f"mysim:{integrator}"
+        if engine in ("mysim", "") and not integrator:
+            return "mysim:rk4"
+        return engine
+
+    def of(self, key):
+        """(colour, marker) of a series key; unknown keys get the next external style."""
+        if key in STYLES:
+            return STYLES[key]
+        if key not in self.external:
+            self.external[key] = EXTERNAL_STYLES[len(self.external) % len(EXTERNAL_STYLES)]
+        return self.external[key]
+
+    def line(self, key, variant=0):
+        colour, marker = self.of(key)
+        return dict(color=colour, marker=marker, linestyle=LINESTYLES[variant % len(LINESTYLES)],
+                    markersize=5, lw=1.3)
+
+
+def number(text):
+    try:
+        value = float(text)
+    except (TypeError, ValueError):
+        return None
+    return value if math.isfinite(value) else None
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def coincident(series, rtol=0.01):
+    """Pairs (a, b) of series whose points agree to rtol at every x: on a log axis 1 % is inside
+    the line's width, so b, drawn under a, would vanish. series: label -> sorted list of (x, y)."""
+    labels = sorted(series)
+    pairs = []
+    for i, a in enumerate(labels):
+        for b in labels[i + 1:]:
+            pa, pb = series[a], series[b]
+            if len(pa) == len(pb) and pa and all(
+                    math.isclose(xa, xb, rel_tol=rtol) and math.isclose(ya, yb, rel_tol=rtol, abs_tol=1e-300)
+                    for (xa, ya), (xb, yb) in zip(pa, pb)):
+                pairs.append((a, b))
+    return pairs
+
+
+def draw_coincidences(ax, pairs, styles_of, markers=True):
+    """Redraws the hidden member of each coinciding pair as larger hollow markers (or, for dense
+    time series, a wide translucent band), so both show, and says so on the axes."""
+    if not pairs:
+        return []
+    groups = []  # series that coincide, transitively
+    for a, b in pairs:
+        joined = [g for g in groups if a in g or b in g]
+        merged = {a, b}.union(*joined)
+        groups = [g for g in groups if g not in joined] + [merged]
+    notes = [", ".join(sorted(g)[:-1]) + f" and {sorted(g)[-1]} coincide." for g in groups]
+    pairs = [(None, b) for g in groups for b in sorted(g)[1:]]
+    how = "hollow markers" if markers else "wide pale band"
+    ax.text(0.99, 0.01 if markers else 0.99, "\n".join(notes) + f"\n({how}: the series underneath)",
+            transform=ax.transAxes, ha="right", va="bottom" if markers else "top", fontsize=7,
+            bbox=dict(facecolor="#fff8dc", edgecolor="#d4b106", alpha=0.95))
+    for i, (_, b) in enumerate(pairs):
+        xs, ys, kw = styles_of(b)
+        if markers:
+            ax.plot(xs, ys, linestyle="none", marker=kw["marker"], markersize=10 + 4 * i, markerfacecolor="none",
+                    markeredgecolor=kw["color"], markeredgewidth=1.4)
+        else:
+            ax.plot(xs, ys, color=kw["color"], lw=6 + 5 * i, alpha=0.35, zorder=1 - 0.01 * i)
+    return notes
+
+
+class Page:
+    """One page: a key (its PNG's name, and how other pages refer to it), the question it answers
+    (its title), how to read it (its caption), and draw(fig, ctx), which may return notes to add
+    to the caption (what it found while drawing, e.g. series that coincide)."""
+
+    def __init__(self, key, title, caption, draw):
+        self.key, self.title, self.caption, self.draw = key, title, caption, draw
+
+
+def plot_area(fig, rows=1, cols=1, right=None, **kw):
+    """A grid of axes inside the page's plot rectangle (`right`: leave room for labels)."""
+    left, bottom, default_right, top = PLOT_RECT
+    return fig.add_gridspec(rows, cols, left=left, bottom=bottom, right=right or default_right, top=top, **kw)

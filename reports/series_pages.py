@@ -1,0 +1,69 @@
+"""Sag and sphere penetration over time, one panel per scene, every engine in each."""
+import math
+from collections import defaultdict
+
+from report_style import Page, number, plot_area, read_csv
+
+PER_PAGE = 9
+
+
+def engine_key(ctx, name, comparison):
+    engine = next((e for e in comparison["engines"] if e["name"] == name), {"integrator": ""})
+    return ctx.styles.key(name, engine["integrator"] if name == "mysim" else "")
+
+
+def panels_page(key, title, caption, chosen, column, scale, ylabel):
+    def draw(fig, ctx):
+        cols = min(3, len(chosen))
+        rows = math.ceil(len(chosen) / cols)
+        grid = plot_area(fig, rows, cols, wspace=0.25, hspace=0.45)
+        handles = {}
+        for i, c in enumerate(chosen):
+            ax = fig.add_subplot(grid[i // cols, i % cols])
+            series = defaultdict(list)
+            for r in read_csv(c["series"]):
+                value = number(r[column])
+                if value is not None:
+                    series[r["engine"]].append((number(r["t"]), scale * value))
+            for name, pts in series.items():
+                kw = ctx.styles.line(engine_key(ctx, name, c))
+                kw["marker"] = None
+                line, = ax.plot(*zip(*pts), label=name, **kw)
+                handles.setdefault(name, line)
+            ax.set_title(c["scene"], fontsize=9)
+            ax.tick_params(labelsize=7)
+            ax.grid(True, alpha=0.3)
+            if i % cols == 0:
+                ax.set_ylabel(ylabel, fontsize=8)
+            if i // cols == rows - 1:
+                ax.set_xlabel("time t [s]", fontsize=8)
+        fig.legend(list(handles.values()), list(handles), fontsize=7.5, ncol=min(6, len(handles)),
+                   loc="upper center", bbox_to_anchor=(0.5, 0.925), frameon=False)
+        return []
+    return Page(key, title, caption, draw)
+
+
+def chunks(items):
+    return [items[i:i + PER_PAGE] for i in range(0, len(items), PER_PAGE)]
+
+
+def pages(manifest):
+    result = []
+    with_sag = [c for c in manifest["comparisons"] if c["group"] not in ("energy",) and c.get("series")
+                and c.get("model", {}).get("kind") in ("chain", "cloth")]
+    for n, part in enumerate(chunks(with_sag)):
+        result.append(panels_page(
+            f"sag_{n + 1}", "How far does each engine let the system sag, and when does it settle?",
+            "Drop of the lowest node below its start, per scene and engine, over the run. Lines that end "
+            "early belong to runs that blew up; lines that part show engines that settle to different "
+            "shapes (the drape pages show where).", part, "sag_lowest", 1.0, "lowest point's drop [m]"))
+    with_sphere = [c for c in manifest["comparisons"] if c["group"] not in ("energy",) and c.get("series")
+                   and c.get("model", {}).get("sphere")]
+    for n, part in enumerate(chunks(with_sphere)):
+        result.append(panels_page(
+            f"penetration_{n + 1}", "Does any engine let the cloth sink into the sphere?",
+            "Depth of the deepest node inside the sphere (0: none inside), per scene and engine, over the "
+            "run, in millimetres. mysim projects every node out after each step; Bullet corrects contacts "
+            "through a signed-distance field, so a node may sit inside between corrections.",
+            part, "penetration_deepest", 1e3, "deepest node inside [mm]"))
+    return result

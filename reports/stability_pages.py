@@ -1,0 +1,136 @@
+"""Where each engine and integrator goes unstable, against theory (the stability tables)."""
+from collections import defaultdict
+
+import numpy as np
+
+from report_style import Page, number, plot_area, read_csv
+
+FOUND = ("bracketed", "stable-at-max")
+
+
+def oscillator_page(path, extremes_path):
+    def draw(fig, ctx):
+        rows = read_csv(path)
+        masses = sorted({number(r["mass"]) for r in rows})
+        mass = masses[len(masses) // 2]
+        grid = plot_area(fig, 1, 2, wspace=0.28)
+        ratio_ax, map_ax = fig.add_subplot(grid[0, 0]), fig.add_subplot(grid[0, 1])
+        untheorised = []
+        for method in sorted({r["integrator"] for r in rows}):
+            key = f"mysim:{method}"
+            kw = ctx.styles.line(key)
+            mine = sorted((number(r["stiffness"]), r) for r in rows
+                          if r["integrator"] == method and number(r["mass"]) == mass)
+            ratios = [(k, number(r["ratio"])) for k, r in mine if r["status"] == "bracketed" and number(r["ratio"])]
+            if ratios:
+                ratio_ax.semilogx(*zip(*ratios), label=key, **kw)
+            else:
+                hw = [number(r["h_stable"]) * number(r["omega"]) for _, r in mine if r["status"] in FOUND]
+                capped = any(r["status"] == "stable-at-max" for _, r in mine)
+                untheorised.append(f"{key}: " + ("stable at every step tried" if capped else
+                                                 f"limit h w = {np.median(hw):.3g}, no theory" if hw else "no stable step"))
+            shown = [(k, number(r["h_stable"])) for k, r in mine if r["status"] in FOUND]
+            if shown:
+                map_ax.loglog(*zip(*shown), label=key, **kw)
+            theory = [(k, number(r["theory_h"])) for k, r in mine if number(r["theory_h"])]
+            if theory:
+                map_ax.loglog(*zip(*theory), color=kw["color"], lw=0.8, linestyle=(0, (4, 3)))
+        ratio_ax.axhline(1.0, color="black", lw=1)
+        ratio_ax.set_xlabel("spring stiffness k [N/m]")
+        ratio_ax.set_ylabel("largest stable step measured / theory [1]")
+        ratio_ax.set_title(f"measured over theory (m = {mass:g} kg)", fontsize=10)
+        ratio_ax.grid(True, which="both", alpha=0.3)
+        ratio_ax.legend(fontsize=7)
+        if untheorised:
+            ratio_ax.text(0.02, 0.02, "\n".join(untheorised), transform=ratio_ax.transAxes, fontsize=7,
+                          va="bottom", bbox=dict(facecolor="white", edgecolor="0.8"))
+        map_ax.set_xlabel("spring stiffness k [N/m]")
+        map_ax.set_ylabel("largest stable step [s]")
+        map_ax.set_title("the map (thin dashed: theory)", fontsize=10)
+        map_ax.grid(True, which="both", alpha=0.3)
+        map_ax.legend(fontsize=7)
+        if not extremes_path:
+            return []
+        extremes = [f"{r['case']}, {r['integrator']}: {r['quantity']} {number(r['value']):.3g} {r['unit']}"
+                    for r in read_csv(extremes_path)]
+        return ["At the extremes (springcheck stability --extremes): " + "; ".join(extremes) + "."]
+    return Page("stability_oscillator", "How close does each integrator come to its theoretical step limit?",
+                "Left: the largest step each integrator survives on a single damped oscillator, divided by the "
+                "theory for its scheme (1 = exactly as predicted; above 1, the damping helps). The problem is "
+                "scale-free, so the ratio is the finding and the map on the right is only parallel lines: "
+                "h_max = c / w with c = 2 for symplectic Euler and Verlet, 2.83 for RK4.", draw)
+
+
+def scene_page(entry):
+    scene = entry["scene"]
+
+    def draw(fig, ctx):
+        rows = read_csv(entry["path"])
+        grid = plot_area(fig, 1, 2, right=0.92, wspace=0.32, width_ratios=(1, 1.15))
+        map_ax, limit_ax = fig.add_subplot(grid[0, 0]), fig.add_subplot(grid[0, 1])
+        ratios = sorted({number(r["mass_ratio"]) for r in rows})
+        engines = sorted({(r["engine"], r["classic_iterations"]) for r in rows})
+        notes, labels = [], []
+        for row_index, (engine, iterations) in enumerate(engines):
+            label = engine + (f" ({iterations} passes)" if iterations else "")
+            labels.append(label)
+            variant = sorted({e[1] for e in engines if e[0] == engine}).index(iterations)
+            kw = ctx.styles.line(engine, variant)
+            mine = [r for r in rows if (r["engine"], r["classic_iterations"]) == (engine, iterations)]
+            base = sorted((number(r["stiffness"]), r) for r in mine if number(r["mass_ratio"]) == ratios[0])
+            shown = [(k, number(r["h_stable"])) for k, r in base if r["status"] in FOUND and number(r["h_stable"])]
+            if shown:
+                map_ax.loglog(*zip(*shown), label=label, **kw)
+            theory = [(k, number(r["theory_h"])) for k, r in base if number(r["theory_h"])]
+            if theory:
+                map_ax.loglog(*zip(*theory), color=kw["color"], lw=0.8, linestyle=(0, (4, 3)))
+            if any(r["status"] == "refused" for r in mine):
+                notes.append(f"{label} refuses this model")
+            for j, ratio in enumerate(ratios):
+                pts = [r for r in mine if number(r["mass_ratio"]) == ratio and r["status"] in FOUND]
+                hw = [number(r["h_w_max"]) for r in pts if number(r["h_w_max"])]
+                y = row_index + (j - (len(ratios) - 1) / 2) * 0.22
+                capped = [r for r in pts if r["status"] == "stable-at-max"]
+                limit_ax.scatter(hw, [y] * len(hw), color=kw["color"], marker=kw["marker"], s=22,
+                                 alpha=0.85, edgecolors="none" if not capped else "black")
+            if not any(number(r["h_w_max"]) for r in mine if r["status"] in FOUND):
+                found = [r for r in mine if r["status"] in FOUND]
+                text = ("stable at every step tried" if found else
+                        "refuses this model" if any(r["status"] == "refused" for r in mine) else "never stable")
+                limit_ax.annotate(text, (0.02, row_index), xycoords=("axes fraction", "data"), va="center",
+                                  fontsize=7.5, color=kw["color"])
+            measured = [number(r["ratio"]) for r in mine if number(r["ratio"]) and r["status"] == "bracketed"]
+            c = [number(r["theory_h"]) * number(r["w_max"]) for r in mine if number(r["theory_h"])]
+            if c:
+                limit_ax.plot([c[0], c[0]], [row_index - 0.42, row_index + 0.42], color="black", lw=1.6)
+            if measured:
+                limit_ax.annotate(f"x{min(measured):.2f}..{max(measured):.2f}", (1.0, row_index),
+                                  xycoords=("axes fraction", "data"), xytext=(4, 0),
+                                  textcoords="offset points", va="center", fontsize=7)
+        limit_ax.set_xscale("log")
+        limit_ax.set_yticks(range(len(labels)), labels, fontsize=7.5)
+        limit_ax.invert_yaxis()
+        limit_ax.set_xlabel("largest stable step times the highest natural frequency, h w_max [1]")
+        limit_ax.set_title("the limit, scale-free; black bar: theory c; right: measured / theory", fontsize=9)
+        limit_ax.grid(True, axis="x", which="both", alpha=0.3)
+        map_ax.set_xlabel("spring stiffness k [N/m]")
+        map_ax.set_ylabel("largest stable step [s]")
+        map_ax.set_title(f"the map at neighbour mass ratio {ratios[0]:g} (thin dashed: theory c / w_max)", fontsize=9)
+        map_ax.grid(True, which="both", alpha=0.3)
+        map_ax.legend(fontsize=6.5, loc="lower left")
+        spread = ", ".join(f"{r:g}" for r in ratios)
+        return [f"Right: one row per engine, one dot per stiffness, the dots of mass ratios {spread} "
+                "stacked top to bottom; a dot outlined black is stable at the largest step tried."] + \
+            ([f"{'; '.join(notes)}."] if notes else [])
+    return Page(f"stability_{scene}", f"Where does each engine go unstable on {scene}, and how close to theory?",
+                "Every engine's largest stable step, found by bisection, across spring stiffness and neighbour "
+                "mass ratio (stiffer springs and lighter masses raise the highest natural frequency w_max, found "
+                "by Lanczos). Left: the step itself. Right: h w_max, which removes the scale: an engine whose "
+                "dots sit on its black bar is exactly as stable as its scheme's theory.", draw)
+
+
+def pages(manifest):
+    stability = manifest["stability"]
+    result = [oscillator_page(stability["stability"], stability.get("extremes"))] \
+        if stability.get("stability") else []
+    return result + [scene_page(s) for s in stability["scenes"]]

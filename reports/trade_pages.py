@@ -1,0 +1,130 @@
+"""Speed against accuracy, and convergence, from the sweep tables."""
+import math
+from collections import defaultdict
+
+import numpy as np
+
+from report_style import Page, coincident, draw_coincidences, number, plot_area, read_csv
+
+
+def series_key(row):
+    integrator = "" if row["integrator"] in ("-", "") else row["integrator"]
+    return f"mysim:{integrator}" if row["engine"] == "mysim" else row["engine"]
+
+
+def label_of(row):
+    tolerance = row.get("tolerance") or ""
+    return series_key(row) + (f" tol {tolerance}" if tolerance else "")
+
+
+def tolerances(rows):
+    return sorted({r.get("tolerance") or "" for r in rows}, key=lambda t: number(t) or 0, reverse=True)
+
+
+def draw_series(ax, series, variants, ctx, loglog=True):
+    """One line per label; coinciding series redrawn hollow and named on the axes."""
+    def style(label):
+        pts = series[label]
+        kw = ctx.styles.line(variants[label][0], variants[label][1])
+        return [p[0] for p in pts], [p[1] for p in pts], kw
+    for label in sorted(series):
+        xs, ys, kw = style(label)
+        (ax.loglog if loglog else ax.plot)(xs, ys, label=label, **kw)
+    return draw_coincidences(ax, coincident(series), style)
+
+
+def pareto(points):
+    """Points (time, error) not beaten on both: sorted by time, error strictly falling."""
+    front, best = [], math.inf
+    for t, e in sorted(points):
+        if e < best:
+            front.append((t, e))
+            best = e
+    return front
+
+
+def collect(rows, x_column):
+    series, variants = defaultdict(list), {}
+    tols = tolerances(rows)
+    for r in rows:
+        x, e = number(r[x_column]), number(r["error"])
+        if r["status"] == "ok" and x and e:
+            series[label_of(r)].append((x, e))
+            variants[label_of(r)] = (series_key(r), tols.index(r.get("tolerance") or ""))
+    for pts in series.values():
+        pts.sort()
+    return series, variants
+
+
+def speed_accuracy_page(sweep):
+    def draw(fig, ctx):
+        rows = read_csv(sweep["path"])
+        scales = sorted({number(r["stiffness_scale"]) for r in rows})
+        grid = plot_area(fig, 1, len(scales), wspace=0.25)
+        notes, blown = [], defaultdict(set)
+        for i, scale in enumerate(scales):
+            ax = fig.add_subplot(grid[0, i])
+            part = [r for r in rows if number(r["stiffness_scale"]) == scale]
+            for r in part:
+                if r["status"] != "ok":
+                    blown[scale].add(label_of(r))
+            series, variants = collect(part, "wall_seconds")
+            if not series:
+                ax.text(0.5, 0.5, "no run finished", ha="center", transform=ax.transAxes)
+                continue
+            notes += draw_series(ax, series, variants, ctx)
+            front = pareto([p for pts in series.values() for p in pts])
+            ax.step(*zip(*front), where="post", color="black", lw=2.2, alpha=0.5, label="Pareto front")
+            ax.set_xlabel("wall time of the stepping, fastest of the repeats [s]")
+            ax.set_ylabel("error against the reference [m]")
+            ax.set_title(f"stiffness x{scale:g}" + (f"  ({len(blown[scale])} series lost runs)" if blown[scale] else ""),
+                         fontsize=10)
+            ax.grid(True, which="both", alpha=0.3)
+            ax.legend(fontsize=6.5, ncol=2, loc="lower left")
+        lost = [f"stiffness x{s:g}: {', '.join(sorted(b))}" for s, b in blown.items() if b]
+        return notes + ([f"Runs that blew up or hit a limit are left out ({'; '.join(lost)})."] if lost else [])
+    reference = "the converged reference named in the table"
+    return Page(f"speed_accuracy_{sweep['name']}",
+                f"Which engine and step reach a given error soonest? ({sweep['name']})",
+                f"Each point is one run of the sweep: its error against {reference} (max over frames of "
+                "the RMS node distance) against the wall time of its stepping. Lower left is better; the "
+                "grey staircase is the Pareto front, the runs no other run beats on both. Points on one "
+                "line are one engine or integrator at different steps.", draw)
+
+
+def convergence_page(sweep):
+    def draw(fig, ctx):
+        rows = read_csv(sweep["path"])
+        scale = min(number(r["stiffness_scale"]) for r in rows)
+        rows = [r for r in rows if number(r["stiffness_scale"]) == scale]
+        ax = fig.add_subplot(plot_area(fig)[0, 0])
+        series, variants = collect(rows, "dt")
+        if not series:
+            ax.text(0.5, 0.5, "no run finished", ha="center", transform=ax.transAxes)
+            return []
+        notes = draw_series(ax, series, variants, ctx)
+        dts = sorted({p[0] for pts in series.values() for p in pts})
+        errors = [p[1] for pts in series.values() for p in pts]
+        anchor = math.exp(np.mean(np.log(errors)))
+        h = np.array([dts[0], dts[-1]])
+        for order, style in ((1, ":"), (2, "--"), (4, "-.")):
+            ax.loglog(h, anchor * (h / h[-1]) ** order, style, color="0.55", lw=1.1, label=f"slope {order}")
+        ax.set_xlabel("step dt [s]")
+        refs = sorted({r["reference"] for r in rows if r.get("reference")})
+        ax.set_ylabel(f"error against {', '.join(refs) or 'the reference'} [m]")
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7, ncol=3, loc="upper left")
+        return notes
+    against = ("each engine against itself at a finer step (self-consistency), so Bullet is measured "
+               "against Bullet" if sweep["self_reference"] else "one converged reference run")
+    return Page(f"convergence_{sweep['name']}",
+                f"Does each method converge at its order? ({sweep['name']})",
+                f"Error of every finished run against {against}, over the step, log-log, at the sweep's "
+                "lowest stiffness. A line parallel to the grey 'slope k' guide converges at order k; a "
+                "line that flattens has hit the error of its reference or its solver tolerance.", draw)
+
+
+def pages(manifest):
+    sweeps = manifest["sweeps"]
+    shared = [s for s in sweeps if not s["self_reference"]]
+    return [speed_accuracy_page(s) for s in shared] + [convergence_page(s) for s in sweeps]

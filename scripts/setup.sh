@@ -6,7 +6,8 @@ cd "$(dirname "$0")/.."
 
 packages=(cmake g++ make pkg-config libbullet-dev libeigen3-dev googletest libgtest-dev
           libbenchmark-dev nlohmann-json3-dev libcli11-dev python3-matplotlib python3-numpy
-          libglfw3-dev libgl-dev libgl1-mesa-dri xvfb xauth help2man)
+          libglfw3-dev libgl-dev libgl1-mesa-dri xvfb xauth help2man
+          libpng-dev)
 scripts/install-packages.sh "${packages[@]}"
 
 preset=${1:-default}

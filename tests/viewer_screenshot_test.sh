@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Opens the viewer on the cloth under Xvfb (Mesa's software OpenGL), saves a screenshot and
 # checks that both viewports show the cloth: enough cloth-coloured pixels in the middle of each
-# half, where the hanging cloth is drawn.
+# half, where the hanging cloth is drawn; and that the (compressed) PNG stays under 300 KiB.
 # Usage: viewer_screenshot_test.sh SPRINGCHECK PYTHON SOURCE_DIR WORK_DIR
 set -euo pipefail
 B=$1 PY=$2 SRC=$3 OUT=$4
@@ -10,6 +10,9 @@ rm -f "$OUT/view.png"
 cd "$SRC"
 xvfb-run -a -s "-screen 0 1280x720x24" "$B" view scenes/matched/cloth_hanging.json \
   --engines mysim,bullet-deformable --frames 30 --screenshot "$OUT/view.png"
+size=$(stat -c %s "$OUT/view.png")
+echo "screenshot: $size bytes"
+[ "$size" -lt $((300 * 1024)) ] || { echo "FAIL: the screenshot is $size bytes, over 300 KiB"; exit 1; }
 "$PY" - "$OUT/view.png" <<'PYEOF'
 import sys
 import matplotlib.image as mpimg

@@ -5,8 +5,8 @@
 
 namespace viewer {
 
-// Writes 8-bit RGB pixels (rows top to bottom) as a PNG: zlib "stored" (uncompressed) blocks,
-// which every PNG reader accepts, so no image library is needed for a screenshot.
+// Writes 8-bit RGB pixels (rows top to bottom) as a compressed PNG with libpng (Debian's
+// libpng-dev), whole or not at all: a temporary file renamed into place.
 [[nodiscard]] bool writePng(const std::string& path, int width, int height,
                             const std::vector<std::uint8_t>& rgb);
 

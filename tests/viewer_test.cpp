@@ -96,6 +96,23 @@ TEST(ViewerKeys, ICyclesIntegratorsAndSkipsSecondOrderOnesForTheCircle) {
   EXPECT_EQ(circle.integrator(), "dopri5");
 }
 
+TEST(ViewerKeys, TheCircleNamesTheIntegratorThatRunsAndRefusesWindAndSwing) {
+  ViewerSession s = session();
+  s.handleKey('i');  // symplectic-euler chosen on the cloth
+  s.handleKey('t');  // -> on to the next scenes until the circle
+  while (s.scene().name != "circle") s.handleKey('t');
+  EXPECT_EQ(s.integrator(), "symplectic-euler");
+  EXPECT_EQ(s.activeIntegrator(), "rk4");  // what the circle really steps with
+  EXPECT_EQ(s.engines()[0].integrator, "rk4");
+  EXPECT_FALSE(s.togglesApply());
+  s.handleKey('d');
+  EXPECT_FALSE(s.wind());
+  EXPECT_NE(s.notice().find("wind does not apply"), std::string::npos);
+  EXPECT_EQ(s.summary().find("wind"), std::string::npos);  // not shown where it cannot act
+  s.handleKey('r');
+  EXPECT_TRUE(s.notice().empty());
+}
+
 TEST(ViewerKeys, SpacePausesAndDotStepsOnce) {
   ViewerSession s = session();
   s.handleKey(' ');

@@ -16,6 +16,7 @@ struct ViewOptions {
   double dt = 0.0;
   int frames = 0;
   std::string screenshot;
+  std::string screenshot_dir;
   std::vector<std::string> engines_files;
 };
 
@@ -57,7 +58,7 @@ int view(const ViewOptions& o) {
     std::cerr << "error: " << session.error() << '\n';
     return kBadInput;
   }
-  return viewer::runWindow(session, {1280, 640, o.frames, o.screenshot});
+  return viewer::runWindow(session, {1280, 640, o.frames, o.screenshot, o.screenshot_dir});
 }
 
 }  // namespace
@@ -72,6 +73,8 @@ void addViewCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--dt", o->dt, "Step in s (overrides the scenes)")->check(kPositive);
   cmd->add_option("--frames", o->frames, "Run this many frames without a person, then close");
   cmd->add_option("--screenshot", o->screenshot, "With --frames: save the last frame as PNG");
+  cmd->add_option("--screenshot-dir", o->screenshot_dir,
+                  "Where the p key saves springcheck-view-NNN.png (default: the current folder)");
   addEnginesFileOption(cmd, o->engines_files);
   cmd->callback([o, &exit_code] { exit_code = view(*o); });
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 #include "mysim/particle_system.h"
 #include "mysim/sphere_collider.h"
@@ -72,6 +73,7 @@ void ViewerSession::build() {
       view.system = std::move(instance->system);
       view.stepper = std::move(instance->stepper);
       view.state = instance->start;
+      view.integrator = instance->integrator;
     } else {
       view.refused = instance.error().message;
     }
@@ -82,8 +84,10 @@ void ViewerSession::build() {
 }
 
 void ViewerSession::frameCamera() {
-  if (engines_.empty() || !engines_[0].system) return;
-  const auto rows = engines_[0].system->particleRows(engines_[0].state);
+  // Framed on the first engine that runs (the first may have refused the scene).
+  auto shown = std::find_if(engines_.begin(), engines_.end(), [](const EngineView& e) { return e.system != nullptr; });
+  if (shown == engines_.end()) return;
+  const auto rows = shown->system->particleRows(shown->state);
   const Eigen::Vector3d low = rows.leftCols<3>().colwise().minCoeff();
   const Eigen::Vector3d high = rows.leftCols<3>().colwise().maxCoeff();
   Eigen::Vector3d centre = 0.5 * (low + high);
@@ -93,7 +97,14 @@ void ViewerSession::frameCamera() {
     centre.y() -= 0.4 * size;
     size *= 1.4;
   }
-  if (scene_.kind == mysim::SystemKind::Circle) size = 2.5;
+  if (scene_.kind == mysim::SystemKind::Circle) {
+    size = 2.5;
+    centre.setZero();
+    camera_.yaw = camera_.pitch = 0.0;  // face on: the orbit lies in the x-y plane
+  } else {
+    camera_.yaw = Camera{}.yaw;
+    camera_.pitch = Camera{}.pitch;
+  }
   for (int k = 0; k < 3; ++k) camera_.target[k] = centre[k];
   camera_.distance = 1.6 * size;
 }
@@ -136,6 +147,12 @@ void ViewerSession::advance(double real_seconds, double budget_seconds) {
 void ViewerSession::reset() { build(); }  // toggles and the pause state are kept
 
 bool ViewerSession::handleKey(char key) {
+  notice_.clear();
+  if ((key == 'd' || key == 's') && !togglesApply()) {
+    notice_ = std::string(key == 'd' ? "wind" : "swing") +
+              " does not apply to the circle (a first-order ODE, no particles)";
+    return true;
+  }
   switch (key) {
     case 't':
       scene_index_ = (scene_index_ + 1) % scenes_.size();
@@ -176,6 +193,20 @@ bool ViewerSession::handleKey(char key) {
     default:
       return false;
   }
+}
+
+std::string ViewerSession::summary() const {
+  char t[32];
+  std::snprintf(t, sizeof t, "%.3f", time_);
+  char step[32];
+  std::snprintf(step, sizeof step, "%.4g", dt_);
+  std::string text = "scene " + scene_.name + ", t " + t + " s, mysim " + activeIntegrator() +
+                     ", dt " + step + " s, " + (paused_ ? "paused" : "running") + ", " +
+                     (shaded_ ? "shaded" : "springs");
+  if (togglesApply()) {
+    text += std::string(", wind ") + (wind_ ? "on" : "off") + ", swing " + (swing_ ? "on" : "off");
+  }
+  return text;
 }
 
 std::optional<double> ViewerSession::energy(const EngineView& e) const {

@@ -5,20 +5,24 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
+#include <thread>
 
-#include "bitmap_font.h"
 #include "mysim/cloth_mesh.h"
 #include "mysim/particle_system.h"
 #include "png_writer.h"
+#include "text.h"
 
 namespace viewer {
 namespace {
 
 struct WindowState {
   ViewerSession* session = nullptr;
+  const WindowOptions* options = nullptr;
   bool dragging = false;
   double last_x = 0, last_y = 0;
+  bool screenshot_requested = false;  // p: saved after the next frame is drawn
 };
 
 void keyCallback(GLFWwindow* window, int key, int, int action, int) {
@@ -32,7 +36,17 @@ void keyCallback(GLFWwindow* window, int key, int, int action, int) {
   if (key >= GLFW_KEY_A && key <= GLFW_KEY_Z) c = static_cast<char>('a' + (key - GLFW_KEY_A));
   if (key == GLFW_KEY_SPACE) c = ' ';
   if (key == GLFW_KEY_PERIOD) c = '.';
-  if (c) ws->session->handleKey(c);
+  if (c == 'p') {
+    ws->screenshot_requested = true;
+    return;
+  }
+  // Every key that means something says what it did on the terminal (and the tests read it).
+  if (c && ws->session->handleKey(c)) {
+    const std::string name = c == ' ' ? "space" : std::string(1, c);
+    std::printf("view: key %s: %s%s\n", name.c_str(), ws->session->summary().c_str(),
+                ws->session->notice().empty() ? "" : ("; " + ws->session->notice()).c_str());
+    std::fflush(stdout);
+  }
 }
 
 void mouseButtonCallback(GLFWwindow* window, int button, int action, int) {
@@ -69,7 +83,31 @@ void lookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target) {
   glTranslated(-eye.x(), -eye.y(), -eye.z());
 }
 
-void drawSphere(const mysim::Sphere& sphere) {
+// The cloth is drawn as flat triangles between nodes that rest on the sphere (at radius +
+// margin), so a triangle's middle dips below that surface by up to R - sqrt(R^2 - rho^2), rho
+// the triangle's circumradius. Drawing the true sphere would show it through the cloth as dark
+// holes where no node is inside; the sphere is drawn smaller by the largest such dip among the
+// triangles near it (docs/viewer.md). Nodes really inside still show it.
+double drawnSphereRadius(const mysim::Model& model, const Eigen::Matrix<double, Eigen::Dynamic, 6>& rows) {
+  const mysim::Sphere& sphere = *model.sphere;
+  const double surface = sphere.radius + sphere.margin;
+  if (!model.grid) return sphere.radius;
+  double dip = 0.0;
+  for (const Eigen::Vector3i& t : mysim::gridTriangles(*model.grid)) {
+    const Eigen::Vector3d a = rows.row(t[0]).head<3>(), b = rows.row(t[1]).head<3>(),
+                          c = rows.row(t[2]).head<3>();
+    if ((a - sphere.center).norm() > 1.5 * surface) continue;  // far from the sphere
+    const double area2 = (b - a).cross(c - a).norm();
+    if (area2 <= 0) continue;
+    const double rho = (b - a).norm() * (c - b).norm() * (a - c).norm() / (2 * area2);
+    dip = std::max(dip, rho < surface ? surface - std::sqrt(surface * surface - rho * rho) : surface);
+  }
+  return std::max(0.5 * sphere.radius, std::min(sphere.radius, surface - dip));
+}
+
+void drawSphere(const mysim::Sphere& true_sphere, double radius) {
+  mysim::Sphere sphere = true_sphere;
+  sphere.radius = radius;
   const int slices = 32, stacks = 16;
   glColor3f(0.55f, 0.6f, 0.7f);
   for (int i = 0; i < stacks; ++i) {
@@ -109,7 +147,7 @@ void drawEngine(const ViewerSession& session, const EngineView& e) {
   const mysim::Model& model = ps->model();
   if (model.sphere) {
     glEnable(GL_LIGHTING);
-    drawSphere(*model.sphere);
+    drawSphere(*model.sphere, drawnSphereRadius(model, rows));
   }
   if (model.grid && session.shaded()) {
     mysim::Vector x(3 * rows.rows());
@@ -159,51 +197,72 @@ void drawEngine(const ViewerSession& session, const EngineView& e) {
   glEnd();
 }
 
-// Text in window pixels (origin top left), 2 screen pixels per font pixel.
-void drawText(double x, double y, const std::string& text, float r = 1, float g = 1, float b = 1) {
-  const double scale = 2.0;
-  glColor3f(r, g, b);
-  glBegin(GL_QUADS);
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const std::uint8_t* rows = glyph(text[i]);
-    for (int row = 0; row < 7; ++row) {
-      for (int col = 0; col < 5; ++col) {
-        if (!(rows[row] & (0x10 >> col))) continue;
-        const double px = x + (6 * i + col) * scale, py = y + row * scale;
-        glVertex2d(px, py);
-        glVertex2d(px + scale, py);
-        glVertex2d(px + scale, py + scale);
-        glVertex2d(px, py + scale);
-      }
-    }
-  }
-  glEnd();
-}
-
 std::string format(const char* fmt, double v) {
   char text[64];
   std::snprintf(text, sizeof text, fmt, v);
   return text;
 }
 
-void render(ViewerSession& session, int width, int height, double fps) {
+// Where each engine's viewport goes: one row for up to three engines, two rows beyond, between
+// the status band at the top and the key band at the bottom.
+struct Layout {
+  int top_band = 0, bottom_band = 0, cols = 1, rows = 1, view_width = 0, view_height = 0;
+};
+
+Layout layout(int count, int width, int height, const Text& text) {
+  Layout l;
+  l.top_band = static_cast<int>(2 * text.lineHeight() + 10);
+  l.bottom_band = static_cast<int>(text.lineHeight() + 10);
+  l.rows = count > 3 ? 2 : 1;
+  l.cols = (count + l.rows - 1) / l.rows;
+  l.view_width = width / l.cols;
+  l.view_height = std::max(1, (height - l.top_band - l.bottom_band) / l.rows);
+  return l;
+}
+
+// Frames the camera's view so the scene fits a viewport of any shape: the vertical field of view
+// holds for wide viewports, the horizontal one for tall ones.
+void projection(double aspect) {
+  const double near = 0.01, half = near * std::tan(0.4);
+  if (aspect >= 1) {
+    glFrustum(-half * aspect, half * aspect, -half, half, near, 100.0);
+  } else {
+    glFrustum(-half, half, -half / aspect, half / aspect, near, 100.0);
+  }
+}
+
+void band(double x0, double y0, double x1, double y1) {
+  glColor3f(0.08f, 0.085f, 0.1f);
+  glBegin(GL_QUADS);
+  glVertex2d(x0, y0);
+  glVertex2d(x1, y0);
+  glVertex2d(x1, y1);
+  glVertex2d(x0, y1);
+  glEnd();
+}
+
+void render(ViewerSession& session, const Text& text, int width, int height,
+            const std::string& rate) {
   glClearColor(0.12f, 0.13f, 0.16f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   const auto& engines = session.engines();
   const int count = std::max<int>(1, engines.size());
-  const int view_width = width / count;
+  const Layout l = layout(count, width, height, text);
   const Camera& cam = session.camera();
   const Eigen::Vector3d target(cam.target[0], cam.target[1], cam.target[2]);
   const Eigen::Vector3d eye =
       target + cam.distance * Eigen::Vector3d(std::cos(cam.pitch) * std::sin(cam.yaw),
                                               std::sin(cam.pitch),
                                               std::cos(cam.pitch) * std::cos(cam.yaw));
+  auto origin = [&](int i) {  // top left of viewport i, window pixels from the top
+    return std::pair{(i % l.cols) * l.view_width, l.top_band + (i / l.cols) * l.view_height};
+  };
   for (int i = 0; i < static_cast<int>(engines.size()); ++i) {
-    glViewport(i * view_width, 0, view_width, height);
+    const auto [x, y] = origin(i);
+    glViewport(x, height - y - l.view_height, l.view_width, l.view_height);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
-    const double near = 0.01, top = near * std::tan(0.4), aspect = double(view_width) / height;
-    glFrustum(-top * aspect, top * aspect, -top, top, near, 100.0);
+    projection(double(l.view_width) / l.view_height);
     glMatrixMode(GL_MODELVIEW);
     glLoadIdentity();
     // A headlight: set in eye coordinates, from over the viewer's shoulder, so whatever faces the
@@ -223,46 +282,92 @@ void render(ViewerSession& session, int width, int height, double fps) {
   glLoadIdentity();
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_LIGHTING);
+  band(0, 0, width, l.top_band);
+  band(0, height - l.bottom_band, width, height);
+  // Dividers between viewports only, never across the bands' text.
   glColor3f(0.4f, 0.4f, 0.45f);
   glBegin(GL_LINES);
-  for (int i = 1; i < count; ++i) {
-    glVertex2d(i * view_width, 0);
-    glVertex2d(i * view_width, height);
+  for (int i = 0; i < count; ++i) {
+    const auto [x, y] = origin(i);
+    if (x > 0) {
+      glVertex2d(x, y);
+      glVertex2d(x, y + l.view_height);
+    }
+    if (y > l.top_band) {
+      glVertex2d(x, y);
+      glVertex2d(x + l.view_width, y);
+    }
   }
   glEnd();
-  std::string top = session.scene().name + "  t " + format("%.2f", session.time()) + " s  " +
-                    session.integrator() + "  dt " + format("%.4g", session.dt()) + " s  " +
-                    format("%.0f fps", fps);
-  if (session.speed() < 0.99) top += "  slow motion x" + format("%.2f", session.speed());
-  if (session.paused()) top += "  paused";
-  if (session.wind()) top += "  wind";
-  if (session.swing()) top += "  swing";
-  drawText(10, 10, top);
+
+  std::string top = session.scene().name + "    t " + format("%.2f s", session.time()) +
+                    "    dt " + format("%.4g s", session.dt()) + "    " + rate;
+  if (session.speed() < 0.99) top += "    slow motion x" + format("%.2f", session.speed());
+  if (session.paused()) top += "    paused";
+  if (session.togglesApply()) {
+    top += std::string("    wind ") + (session.wind() ? "on" : "off") + "    swing " +
+           (session.swing() ? "on" : "off");
+  }
+  text.draw(10, 4, top);
   std::string metrics;
-  if (auto d = session.engineDistance())
-    metrics += "engine distance rms " + format("%.3g m", *d) + "  ";
-  if (auto p = session.penetration()) metrics += "penetration " + format("%.3g mm", 1e3 * *p);
-  drawText(10, 30, metrics, 0.8f, 0.9f, 1.0f);
+  if (auto d = session.engineDistance()) {
+    metrics += "RMS distance between the first two engines " + format("%.3g m", *d) + "    ";
+  }
+  if (auto p = session.penetration()) {
+    metrics += "deepest node inside the sphere " + format("%.3g mm", 1e3 * *p);
+  }
+  if (!session.notice().empty()) metrics = session.notice();
+  text.draw(10, 4 + text.lineHeight(), metrics, 0.75f, 0.87f, 1.0f);
+
   for (int i = 0; i < static_cast<int>(engines.size()); ++i) {
     const EngineView& e = engines[i];
-    const double x = i * view_width + 10;
-    drawText(x, 56, e.engine, 1.0f, 0.85f, 0.4f);
+    const auto [vx, vy] = origin(i);
+    const float x = vx + 10, max_width = l.view_width - 20;
+    float y = vy + 6;
+    std::string stepped = e.integrator;
+    if (e.engine.starts_with("mysim") && session.activeIntegrator() != session.integrator() &&
+        e.engine == "mysim") {
+      stepped += " (" + session.integrator() + " needs particles)";
+    }
+    y = text.drawWrapped(x, y, e.engine + (stepped.empty() ? "" : ": " + stepped), max_width,
+                         1.0f, 0.85f, 0.4f);
     if (!e.refused.empty()) {
-      drawText(x, 74,
-               "refused: " + e.refused.substr(e.refused.rfind(": ") + 2).substr(0, view_width / 12),
-               1, 0.5f, 0.5f);
+      text.drawWrapped(x, y, "refused: " + e.refused, max_width, 1.0f, 0.55f, 0.55f);
       continue;
     }
-    if (auto en = session.energy(e)) drawText(x, 74, "E " + format("%.5g J", *en));
-    drawText(x, 92, "stepping " + format("%.2f ms a frame", 1e3 * e.step_seconds));
-    if (e.blowup_time)
-      drawText(x, 110, "blow-up at t " + format("%.3f s", *e.blowup_time) + " " + e.blowup_check, 1,
-               0.3f, 0.3f);
+    if (auto en = session.energy(e)) y = text.draw(x, y, "total energy " + format("%.5g J", *en));
+    y = text.draw(x, y, "stepping " + format("%.2f ms per frame", 1e3 * e.step_seconds));
+    if (e.blowup_time) {
+      text.drawWrapped(x, y, "blew up at t " + format("%.3f s", *e.blowup_time) + ": " +
+                                 e.blowup_check, max_width, 1.0f, 0.35f, 0.35f);
+    }
   }
-  drawText(10, height - 22,
-           "t scene d wind s swing w shade/springs r reset i integrator space pause . step, "
-           "drag/wheel: camera",
-           0.7f, 0.7f, 0.7f);
+  text.drawWrapped(10, height - l.bottom_band + 5,
+                   "t scene   d wind   s swing   w shaded / springs   r reset   i integrator   "
+                   "space pause   . step   p screenshot   drag: orbit   wheel: zoom   q quit",
+                   width - 20, 0.7f, 0.7f, 0.7f);
+}
+
+// The window's pixels as a PNG (rows flipped: OpenGL reads bottom up).
+bool saveScreenshot(const std::string& path, int width, int height) {
+  std::vector<std::uint8_t> pixels(3L * width * height), flipped(pixels.size());
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, pixels.data());
+  for (int y = 0; y < height; ++y) {
+    std::copy_n(pixels.begin() + 3L * width * (height - 1 - y), 3L * width,
+                flipped.begin() + 3L * width * y);
+  }
+  return writePng(path, width, height, flipped);
+}
+
+// p's screenshots: DIR/springcheck-view-NNN.png, the first number not taken.
+std::string nextScreenshotPath(const std::string& dir) {
+  for (int n = 1;; ++n) {
+    char name[64];
+    std::snprintf(name, sizeof name, "springcheck-view-%03d.png", n);
+    const std::filesystem::path path = std::filesystem::path(dir.empty() ? "." : dir) / name;
+    if (!std::filesystem::exists(path)) return path.string();
+  }
 }
 
 }  // namespace
@@ -284,7 +389,17 @@ int runWindow(ViewerSession& session, const WindowOptions& options) {
   }
   glfwMakeContextCurrent(window);
   glfwSwapInterval(options.frames > 0 ? 0 : 1);
-  WindowState ws{&session};
+  auto close = [&](int code) {
+    glfwDestroyWindow(window);
+    glfwTerminate();
+    return code;
+  };
+  Text text;
+  if (std::string error; !text.load(viewerFontFile(), 15.0f, error)) {
+    std::cerr << "error: " << error << '\n';
+    return close(1);
+  }
+  WindowState ws{&session, &options};
   glfwSetWindowUserPointer(window, &ws);
   glfwSetKeyCallback(window, keyCallback);
   glfwSetMouseButtonCallback(window, mouseButtonCallback);
@@ -298,48 +413,58 @@ int runWindow(ViewerSession& session, const WindowOptions& options) {
   glLightModelfv(GL_LIGHT_MODEL_AMBIENT, ambient);
   glShadeModel(GL_SMOOTH);
   glEnable(GL_NORMALIZE);
+  std::printf("view: %s\n", session.summary().c_str());
+  std::fflush(stdout);
 
   using Clock = std::chrono::steady_clock;
-  auto last = Clock::now();
+  // At most 60 frames a second: a display without vsync (Xvfb, some drivers) would otherwise
+  // draw hundreds, spending the cores the engines need.
+  const auto frame_period = std::chrono::microseconds(1000000 / 60);
+  const auto started = Clock::now();
+  auto last = started;
   double fps = 0.0;
   int frame = 0;
   while (!glfwWindowShouldClose(window)) {
+    if (options.frames == 0) std::this_thread::sleep_until(last + frame_period);
     const auto now = Clock::now();
     const double elapsed = std::chrono::duration<double>(now - last).count();
     last = now;
-    fps = elapsed > 0 ? 0.9 * fps + 0.1 / elapsed : fps;
+    fps = elapsed > 0 ? (fps > 0 ? 0.9 * fps + 0.1 / elapsed : 1.0 / elapsed) : fps;
     // Headless runs advance a fixed 1/60 s a frame, so a screenshot does not depend on the speed
     // of the machine; interactive runs follow the clock.
     session.advance(options.frames > 0 ? 1.0 / 60 : elapsed, options.frames > 0 ? 1e9 : 0.03);
     int width = 0, height = 0;
     glfwGetFramebufferSize(window, &width, &height);
-    render(session, width, height, fps);
     ++frame;
-    if (options.frames > 0 && frame >= options.frames) {
-      if (!options.screenshot.empty()) {
-        std::vector<std::uint8_t> pixels(3L * width * height), flipped(pixels.size());
-        glPixelStorei(GL_PACK_ALIGNMENT, 1);
-        glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, pixels.data());
-        for (int y = 0; y < height; ++y) {
-          std::copy_n(pixels.begin() + 3L * width * (height - 1 - y), 3L * width,
-                      flipped.begin() + 3L * width * y);
-        }
-        if (!writePng(options.screenshot, width, height, flipped)) {
-          std::cerr << "error: cannot write " << options.screenshot << '\n';
-          glfwDestroyWindow(window);
-          glfwTerminate();
-          return 1;
-        }
+    const std::string rate =
+        options.frames > 0
+            ? "frame " + std::to_string(frame) + " of " + std::to_string(options.frames) +
+                  " (1/60 s of simulated time each)"
+            : format("%.0f frames/s", fps);
+    render(session, text, width, height, rate);
+    if (ws.screenshot_requested) {
+      ws.screenshot_requested = false;
+      const std::string path = nextScreenshotPath(options.screenshot_dir);
+      if (saveScreenshot(path, width, height)) {
+        std::printf("view: saved %s\n", path.c_str());
+      } else {
+        std::fprintf(stderr, "error: cannot write %s\n", path.c_str());
       }
-      std::printf("view: %d frames, %.1f frames/s\n", frame, fps);
+      std::fflush(stdout);
+    }
+    if (options.frames > 0 && frame >= options.frames) {
+      if (!options.screenshot.empty() && !saveScreenshot(options.screenshot, width, height)) {
+        std::cerr << "error: cannot write " << options.screenshot << '\n';
+        return close(1);
+      }
+      std::printf("view: %d frames drawn in %.2f s\n", frame,
+                  std::chrono::duration<double>(Clock::now() - started).count());
       break;
     }
     glfwSwapBuffers(window);
     glfwPollEvents();
   }
-  glfwDestroyWindow(window);
-  glfwTerminate();
-  return 0;
+  return close(0);
 }
 
 }  // namespace viewer

@@ -19,6 +19,7 @@ struct EngineView {
   std::unique_ptr<mysim::OdeSystem> system;
   std::unique_ptr<mysim::Stepper> stepper;
   mysim::State state;
+  std::string integrator;             // what steps it ("rk4", "bullet-explicit", ...)
   std::string refused;                // why this engine cannot run the scene, if it cannot
   std::optional<double> blowup_time;  // s
   std::string blowup_check;
@@ -56,7 +57,16 @@ class ViewerSession {
   const mysim::Scene& scene() const { return scene_; }
   const std::string& sceneFile() const { return scenes_[scene_index_]; }
   const std::vector<EngineView>& engines() const { return engines_; }
+  // The mysim integrator chosen (i), and the one mysim steps this scene with: they differ on the
+  // circle, which takes first-order methods only and falls back to RK4.
   const std::string& integrator() const { return integrator_; }
+  const std::string& activeIntegrator() const { return scene_.integrator.name; }
+  // Wind and swing act on particles: not on the circle.
+  bool togglesApply() const { return scene_.kind != mysim::SystemKind::Circle; }
+  // What the last key did not do and why (empty when it did what it says).
+  const std::string& notice() const { return notice_; }
+  // One line of state, printed by the window after every key: scene, time, integrator, toggles.
+  std::string summary() const;
   double time() const { return time_; }
   double dt() const { return dt_; }
   bool paused() const { return paused_; }
@@ -91,6 +101,7 @@ class ViewerSession {
   bool paused_ = false, shaded_ = true, wind_ = false, swing_ = false;
   Camera camera_;
   std::string error_;
+  std::string notice_;
 };
 
 }  // namespace viewer

@@ -84,33 +84,39 @@ def comparison_page(c):
         ax.tick_params(labelsize=6)
         ax.set_title(f"{reference_name}'s settled cloth, coloured by the largest distance of any engine",
                      fontsize=8.5)
+        # The flat view that shows most: across the shape's two largest extents (from above for a
+        # cloth lying on a sphere, from the front for a hanging one).
+        extent = xyz.max(axis=0) - xyz.min(axis=0)
+        u, v = sorted(np.argsort(extent)[1:])
+        names = "xyz"
+        view = "from above" if 1 not in (u, v) else "from the front" if 2 not in (u, v) else "from the side"
         for i, e in enumerate(others):
-            top = fig.add_subplot(grid[i // cols, 1 + i % cols])
+            flat = fig.add_subplot(grid[i // cols, 1 + i % cols])
             mine = positions(e["final_state"])
             d = np.array([distance[e["name"]].get(n, 0.0) for n in range(len(mine))])
-            top.scatter(mine[:, 0], mine[:, 2], c=np.maximum(d, norm.vmin) if norm else d, cmap=cmap,
-                        norm=norm, s=10)
+            flat.scatter(mine[:, u], mine[:, v], c=np.maximum(d, norm.vmin) if norm else d, cmap=cmap,
+                         norm=norm, s=10)
             if sphere:
-                top.add_patch(Circle(
-                    (sphere["center"][0], sphere["center"][2]), sphere["radius"], fill=False,
-                    color="0.5", lw=0.8, linestyle="--"))
-            top.set_aspect("equal")
-            top.set_title(f"{e['name']}: max {max(d):.2g} m", fontsize=8)
-            top.tick_params(labelsize=6)
-            top.set_xlabel("x [m]", fontsize=7)
-            top.set_ylabel("z [m]", fontsize=7)
+                flat.add_patch(Circle((sphere["center"][u], sphere["center"][v]), sphere["radius"],
+                                      fill=False, color="0.5", lw=0.8, linestyle="--"))
+            flat.set_aspect("equal")
+            flat.set_title(f"{e['name']}: max {max(d):.2g} m", fontsize=8)
+            flat.tick_params(labelsize=6)
+            flat.set_xlabel(f"{names[u]} [m]", fontsize=7)
+            flat.set_ylabel(f"{names[v]} [m]", fontsize=7)
         if norm is not None:
             bar = fig.colorbar(cm.ScalarMappable(norm=norm, cmap=cmap), ax=fig.axes, shrink=0.6,
                                location="right", pad=0.02)
             bar.set_label(f"distance of a node to {reference_name}'s [m]", fontsize=8)
-        return [] if others else ["Only one engine finished: nothing to compare it with."]
+        notes = [f"Right: seen {view} ({names[u]}-{names[v]})."]
+        return notes + ([] if others else ["Only one engine finished: nothing to compare it with."])
 
     return Page(f"drape_{c['group'].replace('/', '_')}_{c['scene']}",
                 f"Where do the engines disagree on the settled cloth? ({c['scene']})",
                 "Left: the last frame of the first engine in true proportions (equal axes), the sphere as a "
                 "wire frame where the scene has one, each triangle coloured by the largest distance any other "
-                "engine's node has from this one. Right: the same from above (x-z, looking down), one panel per "
-                "engine, each node coloured by its own distance (log colour scale, shared).", draw)
+                "engine's node has from this one. Right: the nodes flat, across the shape's two largest extents, one "
+                "panel per engine, each node coloured by its own distance (log colour scale, shared).", draw)
 
 
 def pages(manifest):

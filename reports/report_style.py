@@ -86,18 +86,28 @@ def coincident(series, rtol=0.01):
     return pairs
 
 
+def coincident_groups(pairs):
+    """The pairs joined into groups of series that coincide, transitively, each sorted."""
+    groups = []
+    for a, b in pairs:
+        joined = [g for g in groups if a in g or b in g]
+        merged = {a, b}.union(*joined)
+        groups = [g for g in groups if g not in joined] + [merged]
+    return [sorted(g) for g in groups]
+
+
+def coincidence_note(group):
+    return ", ".join(group[:-1]) + f" and {group[-1]} coincide."
+
+
 def draw_coincidences(ax, pairs, styles_of, markers=True):
     """Redraws the hidden member of each coinciding pair as larger hollow markers (or, for dense
     time series, a wide translucent band), so both show, and says so on the axes."""
     if not pairs:
         return []
-    groups = []  # series that coincide, transitively
-    for a, b in pairs:
-        joined = [g for g in groups if a in g or b in g]
-        merged = {a, b}.union(*joined)
-        groups = [g for g in groups if g not in joined] + [merged]
-    notes = [", ".join(sorted(g)[:-1]) + f" and {sorted(g)[-1]} coincide." for g in groups]
-    pairs = [(None, b) for g in groups for b in sorted(g)[1:]]
+    groups = coincident_groups(pairs)
+    notes = [coincidence_note(g) for g in groups]
+    pairs = [(None, b) for g in groups for b in g[1:]]
     how = "hollow markers" if markers else "wide pale band"
     ax.text(0.99, 0.01 if markers else 0.99, "\n".join(notes) + f"\n({how}: the series underneath)",
             transform=ax.transAxes, ha="right", va="bottom" if markers else "top", fontsize=7,
@@ -121,7 +131,8 @@ class Page:
         self.key, self.title, self.caption, self.draw = key, title, caption, draw
 
 
-def plot_area(fig, rows=1, cols=1, right=None, **kw):
-    """A grid of axes inside the page's plot rectangle (`right`: leave room for labels)."""
-    left, bottom, default_right, top = PLOT_RECT
-    return fig.add_gridspec(rows, cols, left=left, bottom=bottom, right=right or default_right, top=top, **kw)
+def plot_area(fig, rows=1, cols=1, right=None, top=None, **kw):
+    """A grid of axes inside the page's plot rectangle (`right`, `top`: leave room for a legend)."""
+    left, bottom, default_right, default_top = PLOT_RECT
+    return fig.add_gridspec(rows, cols, left=left, bottom=bottom, right=right or default_right,
+                            top=top or default_top, **kw)

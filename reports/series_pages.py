@@ -2,7 +2,7 @@
 import math
 from collections import defaultdict
 
-from report_style import Page, number, plot_area, read_csv
+from report_style import Page, coincidence_note, coincident, coincident_groups, number, plot_area, read_csv
 
 PER_PAGE = 9
 
@@ -16,8 +16,8 @@ def panels_page(key, title, caption, chosen, column, scale, ylabel):
     def draw(fig, ctx):
         cols = min(3, len(chosen))
         rows = math.ceil(len(chosen) / cols)
-        grid = plot_area(fig, rows, cols, wspace=0.25, hspace=0.45)
-        handles = {}
+        grid = plot_area(fig, rows, cols, top=0.85, wspace=0.25, hspace=0.45)
+        handles, notes = {}, []
         for i, c in enumerate(chosen):
             ax = fig.add_subplot(grid[i // cols, i % cols])
             series = defaultdict(list)
@@ -25,11 +25,14 @@ def panels_page(key, title, caption, chosen, column, scale, ylabel):
                 value = number(r[column])
                 if value is not None:
                     series[r["engine"]].append((number(r["t"]), scale * value))
-            for name, pts in series.items():
-                kw = ctx.styles.line(engine_key(ctx, name, c))
+            series = {(engine_key(ctx, n, c) if n == "mysim" else n): pts for n, pts in series.items()}
+            for group in coincident_groups(coincident(series)):
+                notes.append(f"On {c['scene']}: " + coincidence_note(group))
+            for label, pts in series.items():  # plain "mysim" is named by its integrator
+                kw = ctx.styles.line(ctx.styles.key(label))
                 kw["marker"] = None
-                line, = ax.plot(*zip(*pts), label=name, **kw)
-                handles.setdefault(name, line)
+                line, = ax.plot(*zip(*pts), label=label, **kw)
+                handles.setdefault(label, line)
             ax.set_title(c["scene"], fontsize=9)
             ax.tick_params(labelsize=7)
             ax.grid(True, alpha=0.3)
@@ -39,7 +42,7 @@ def panels_page(key, title, caption, chosen, column, scale, ylabel):
                 ax.set_xlabel("time t [s]", fontsize=8)
         fig.legend(list(handles.values()), list(handles), fontsize=7.5, ncol=min(6, len(handles)),
                    loc="upper center", bbox_to_anchor=(0.5, 0.925), frameon=False)
-        return []
+        return notes
     return Page(key, title, caption, draw)
 
 

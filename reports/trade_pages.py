@@ -17,10 +17,6 @@ def label_of(row):
     return series_key(row) + (f" tol {tolerance}" if tolerance else "")
 
 
-def tolerances(rows):
-    return sorted({r.get("tolerance") or "" for r in rows}, key=lambda t: number(t) or 0, reverse=True)
-
-
 def draw_series(ax, series, variants, ctx, loglog=True):
     """One line per label; coinciding series redrawn hollow and named on the axes."""
     def style(label):
@@ -31,6 +27,14 @@ def draw_series(ax, series, variants, ctx, loglog=True):
         xs, ys, kw = style(label)
         (ax.loglog if loglog else ax.plot)(xs, ys, label=label, **kw)
     return draw_coincidences(ax, coincident(series), style)
+
+
+def legend_outside(fig, ax):
+    """One legend right of the plots (the last panel's entries: every panel has the same series)."""
+    for old in fig.legends:
+        old.remove()
+    fig.legend(*ax.get_legend_handles_labels(), loc="upper left", bbox_to_anchor=(0.81, 0.88),
+               fontsize=7.5, frameon=False)
 
 
 def pareto(points):
@@ -44,13 +48,19 @@ def pareto(points):
 
 
 def collect(rows, x_column):
+    """label -> sorted points, and label -> (style key, variant): a series' tolerances (dopri5's)
+    take line styles in turn, from the loosest."""
     series, variants = defaultdict(list), {}
-    tols = tolerances(rows)
+    tols = defaultdict(set)
+    for r in rows:
+        tols[series_key(r)].add(r.get("tolerance") or "")
+    order = {key: sorted(t, key=lambda v: -(number(v) or 0)) for key, t in tols.items()}
     for r in rows:
         x, e = number(r[x_column]), number(r["error"])
         if r["status"] == "ok" and x and e:
+            key = series_key(r)
             series[label_of(r)].append((x, e))
-            variants[label_of(r)] = (series_key(r), tols.index(r.get("tolerance") or ""))
+            variants[label_of(r)] = (key, order[key].index(r.get("tolerance") or ""))
     for pts in series.values():
         pts.sort()
     return series, variants
@@ -60,7 +70,7 @@ def speed_accuracy_page(sweep):
     def draw(fig, ctx):
         rows = read_csv(sweep["path"])
         scales = sorted({number(r["stiffness_scale"]) for r in rows})
-        grid = plot_area(fig, 1, len(scales), wspace=0.25)
+        grid = plot_area(fig, 1, len(scales), right=0.8, wspace=0.25)
         notes, blown = [], defaultdict(set)
         for i, scale in enumerate(scales):
             ax = fig.add_subplot(grid[0, i])
@@ -80,7 +90,7 @@ def speed_accuracy_page(sweep):
             ax.set_title(f"stiffness x{scale:g}" + (f"  ({len(blown[scale])} series lost runs)" if blown[scale] else ""),
                          fontsize=10)
             ax.grid(True, which="both", alpha=0.3)
-            ax.legend(fontsize=6.5, ncol=2, loc="lower left")
+            legend_outside(fig, ax)
         lost = [f"stiffness x{s:g}: {', '.join(sorted(b))}" for s, b in blown.items() if b]
         return notes + ([f"Runs that blew up or hit a limit are left out ({'; '.join(lost)})."] if lost else [])
     reference = "the converged reference named in the table"
@@ -97,7 +107,7 @@ def convergence_page(sweep):
         rows = read_csv(sweep["path"])
         scale = min(number(r["stiffness_scale"]) for r in rows)
         rows = [r for r in rows if number(r["stiffness_scale"]) == scale]
-        ax = fig.add_subplot(plot_area(fig)[0, 0])
+        ax = fig.add_subplot(plot_area(fig, right=0.8)[0, 0])
         series, variants = collect(rows, "dt")
         if not series:
             ax.text(0.5, 0.5, "no run finished", ha="center", transform=ax.transAxes)
@@ -113,7 +123,7 @@ def convergence_page(sweep):
         refs = sorted({r["reference"] for r in rows if r.get("reference")})
         ax.set_ylabel(f"error against {', '.join(refs) or 'the reference'} [m]")
         ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=7, ncol=3, loc="upper left")
+        legend_outside(fig, ax)
         return notes
     against = ("each engine against itself at a finer step (self-consistency), so Bullet is measured "
                "against Bullet" if sweep["self_reference"] else "one converged reference run")

@@ -113,10 +113,10 @@ std::expected<void, std::string> writeExtremes(const EngineRegistry& registry,
     auto r = registry.run("mysim", s);
     out << "cloth 256 x 256," << integrator << ",time per step," << r->wall_seconds / r->steps
         << ",s\n"
-        << "cloth 256 x 256," << integrator << ",stable," << (r->blowup ? 0 : 1) << ",1/0\n";
+        << "cloth 256 x 256," << integrator << ",stable (1 yes 0 no)," << (r->blowup ? 0 : 1) << ",\n";
     if (r->counts.linear_iterations) {
       out << "cloth 256 x 256," << integrator << ",CG iterations per step,"
-          << double(r->counts.linear_iterations) / r->steps << ",1\n";
+          << double(r->counts.linear_iterations) / r->steps << ",\n";
     }
   }
   rusage usage{};

@@ -35,11 +35,12 @@ def draw_gate_table(fig, rows, failed, top, height):
         return
     table = ax.table(cellText=rows, colLabels=["", "scene", "engines", "metric", "bound", "measured",
                                                "why this bound (or what went wrong)"],
-                     colWidths=[0.04, 0.12, 0.2, 0.11, 0.055, 0.06, 0.415], loc="upper left",
+                     colWidths=[0.04, 0.11, 0.18, 0.145, 0.05, 0.06, 0.415], loc="upper left",
                      cellLoc="left")
     table.auto_set_font_size(False)
     table.set_fontsize(6.6)
     for (r, col), cell in table.get_celld().items():
+        cell.PAD = 0.03  # matplotlib's default indents a wide column's text by a tenth of it
         cell.set_height(min(1.0 / (len(rows) + 1), 0.06))
         cell.set_edgecolor("0.85")
         if r == 0:

@@ -42,7 +42,10 @@ def frame(fig, page, number, total, stamp, notes):
     """Title (the question the page answers), caption (how to read it), page number and stamp."""
     fig.text(0.5, 0.955, page.title, ha="center", va="center", fontsize=14, weight="bold")
     caption = " ".join([page.caption] + list(notes or []))
-    fig.text(0.06, 0.155, "\n".join(textwrap.wrap(caption, 165)), va="top", fontsize=8.5,
+    lines = textwrap.wrap(caption, 165)
+    if len(lines) > 5:  # a long caption (many notes) in smaller type, above the stamp
+        lines = textwrap.wrap(caption, 200)
+    fig.text(0.06, 0.155, "\n".join(lines), va="top", fontsize=8.5 if len(lines) <= 5 else 7,
              color="0.15")
     fig.text(0.06, 0.02, f"springcheck {stamp['version']} (commit {stamp['commit']})  ·  "
              f"{stamp['date']}  ·  {stamp['machine']}\n{stamp['command']}", fontsize=6.5, color="0.4",

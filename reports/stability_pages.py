@@ -104,8 +104,9 @@ def scene_page(entry):
             theory = [(k, number(r["theory_h"])) for k, r in base if number(r["theory_h"])]
             if theory:
                 map_ax.loglog(*zip(*theory), color=kw["color"], lw=0.8, linestyle=(0, (4, 3)))
-            if any(r["status"] == "refused" for r in mine):
-                notes.append(f"{label} refuses this model")
+            refused = sorted({number(r["mass_ratio"]) for r in mine if r["status"] == "refused"})
+            if refused:
+                notes.append((engine, ", ".join(f"{v:g}" for v in refused)))
             for j, ratio in enumerate(ratios):
                 pts = [r for r in mine if number(r["mass_ratio"]) == ratio and r["status"] in FOUND]
                 hw = [number(r["h_w_max"]) for r in pts if number(r["h_w_max"])]
@@ -141,7 +142,7 @@ def scene_page(entry):
         spread = ", ".join(f"{r:g}" for r in ratios)
         return [f"Right: one row per engine, one dot per stiffness, the dots of mass ratios {spread} "
                 "stacked top to bottom; a dot outlined black is stable at the largest step tried."] + \
-            ([f"{'; '.join(notes)}."] if notes else [])
+            [f"{engine} refuses mass ratio {ratios_text} (no dots there)." for engine, ratios_text in sorted(set(notes))]
     return Page(f"stability_{scene}", f"Where does each engine go unstable on {scene}, and how close to theory?",
                 "Every engine's largest stable step, found by bisection, across spring stiffness and neighbour "
                 "mass ratio (stiffer springs and lighter masses raise the highest natural frequency w_max, found "

@@ -17,10 +17,11 @@ const char* kIntegrators[] = {"euler",  "trapezoidal",    "rk4",   "symplectic-e
 constexpr double kSettleTime = 0.1;
 
 void stepBenchmark(benchmark::State& state, const std::string& integrator, int n, int threads,
-                   double cg_tolerance) {
-  const double h = bench::stableStep(n);
+                   double cg_tolerance, double step = 0.0, bool block_preconditioner = true) {
+  const double h = step > 0 ? step : bench::stableStep(n);
   mysim::Scene scene = bench::hangingCloth(n, integrator, h);
   scene.integrator.cg_tolerance = cg_tolerance;
+  scene.integrator.block_preconditioner = block_preconditioner;
   mysim::ParticleSystem system(mysim::buildModel(scene), scene.limits);
   auto method = std::move(mysim::makeIntegrator(scene.integrator).value());
   mysim::State s = system.initialState();
@@ -104,6 +105,24 @@ void registerAll() {
                                  })
         ->Unit(benchmark::kMicrosecond)
         ->UseRealTime();
+  }
+  // Large implicit steps, the reason backward Euler exists: fixed physical steps of 1/60 s and
+  // 1/240 s (far above the explicit limit 1 / (40 n)) from 32 x 32 to 256 x 256, on one core,
+  // with the block-Jacobi preconditioner and, for comparison, the plain diagonal.
+  for (int per_second : {60, 240}) {
+    for (int n : {32, 64, 128, 256}) {
+      for (bool block : {true, false}) {
+        benchmark::RegisterBenchmark(
+            ("BM_LargeImplicitStep/" + std::to_string(per_second) + "/" + std::to_string(n) + "/" +
+             (block ? "block-jacobi" : "jacobi"))
+                .c_str(),
+            [per_second, n, block](benchmark::State& st) {
+              stepBenchmark(st, "backward-euler", n, 1, kCgTolerance, 1.0 / per_second, block);
+            })
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
+      }
+    }
   }
   // Threads: RK4 on 256 x 256 with one core and with all.
   for (int threads : {1, 2}) {

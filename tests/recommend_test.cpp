@@ -53,6 +53,24 @@ TEST(Recommend, PicksTheCheapestRowUnderTheBoundAndTheNextAsRunnerUp) {
   EXPECT_FALSE(recommend(rows, 1e-9, Cost::WallTime)[0].best);
 }
 
+TEST(Recommend, EachEngineGetsItsOwnCheapestChoiceUnderTheBoundCheapestFirst) {
+  const std::vector<SweepRow> rows = {
+      row("bullet-deformable", "-", 0.01, "ok", "2e-3", 0.001, 0),   // too inaccurate
+      row("bullet-deformable", "-", 0.005, "ok", "5e-4", 0.006, 0),  // deformable's best
+      row("bullet-deformable", "-", 0.0025, "ok", "2e-4", 0.012, 0),
+      row("mysim", "rk4", 0.01, "ok", "1e-4", 0.004, 400),           // mysim's best (any integrator)
+      row("mysim", "verlet", 0.01, "ok", "3e-4", 0.005, 200),
+      row("bullet-implicit", "-", 0.01, "ok", "9e-3", 0.002, 0),     // never meets it
+  };
+  const auto found = recommend(rows, 1e-3, Cost::WallTime);
+  ASSERT_EQ(found.size(), 1u);
+  ASSERT_EQ(found[0].per_engine.size(), 2u);
+  EXPECT_EQ(found[0].per_engine[0].engine, "mysim");
+  EXPECT_EQ(found[0].per_engine[0].integrator, "rk4");
+  EXPECT_EQ(found[0].per_engine[1].engine, "bullet-deformable");
+  EXPECT_EQ(found[0].per_engine[1].dt, 0.005);
+}
+
 // The circle x' = -y, y' = x over 3 s: forward Euler's radius grows as (1 + h^2)^(n/2), by 7.8 %
 // at h = 0.05 (60 steps); RK4's phase error is about t h^4 / 120 = 2.5e-6 at h = 0.1. Under
 // 1e-4 only RK4 qualifies, and by work (4 evaluations a step) h = 0.1 (120 evaluations) beats

@@ -61,6 +61,12 @@ std::vector<Recommendation> recommend(const std::vector<SweepRow>& rows, double 
     });
     if (!meeting.empty()) r.best = meeting[0];
     if (meeting.size() > 1) r.runner_up = meeting[1];
+    for (const Choice& c : meeting) {  // cheapest first, so each engine's first is its best
+      if (std::none_of(r.per_engine.begin(), r.per_engine.end(),
+                       [&](const Choice& seen) { return seen.engine == c.engine; })) {
+        r.per_engine.push_back(c);
+      }
+    }
     out.push_back(r);
   }
   return out;

@@ -128,12 +128,33 @@ int recommendCommand(const RecommendOptions& o) {
     std::cout << "  (" << r.meeting << " of " << r.candidates << " finished runs meet the bound; "
               << "error against " << (r.best ? r.best->reference : "the sweep's reference")
               << ")\n";
+    // Speed at equal accuracy: every engine's own best, and mysim's best realtime factor over
+    // the best Bullet engine's.
+    json per_engine = json::array();
+    double mysim_best = 0.0, bullet_best = 0.0;
+    if (!r.per_engine.empty()) std::cout << "  each engine's cheapest under the bound:\n";
+    for (const Choice& c : r.per_engine) {
+      std::cout << "    " << describe(c) << '\n';
+      per_engine.push_back(choiceJson(c));
+      const Engine* engine = registry->find(c.engine);
+      const std::string kind = engine ? engine->kind : "";
+      if (kind == "mysim") mysim_best = std::max(mysim_best, c.realtime_factor);
+      if (kind == "bullet") bullet_best = std::max(bullet_best, c.realtime_factor);
+    }
+    json ratio = nullptr;
+    if (mysim_best > 0 && bullet_best > 0) {
+      ratio = mysim_best / bullet_best;
+      std::cout << "  mysim's best runs " << ratio.get<double>()
+                << "x the realtime factor of Bullet's best at this accuracy\n";
+    }
     out["recommendations"].push_back({{"scene", r.scene},
                                       {"stiffness_scale", r.stiffness_scale},
                                       {"candidates", r.candidates},
                                       {"meeting", r.meeting},
                                       {"best", choiceJson(r.best)},
-                                      {"runner_up", choiceJson(r.runner_up)}});
+                                      {"runner_up", choiceJson(r.runner_up)},
+                                      {"per_engine", per_engine},
+                                      {"mysim_over_bullet_realtime", ratio}});
   }
   if (!o.json_out.empty()) {
     if (auto written = writeFileAtomically(

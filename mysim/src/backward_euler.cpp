@@ -1,3 +1,4 @@
+#include <Eigen/LU>
 #include <algorithm>
 #include <vector>
 
@@ -15,8 +16,8 @@ constexpr int kParallelParticles = 512;
 // eq. 16: one Newton step of v1 = v0 + h M^-1 f(x0 + h v1, v1), linearised at (x0, v0):
 //   (M - h df/dv - h^2 df/dx) dv = h (f0 + h df/dx v0),   v1 = v0 + dv,   x1 = x0 + h v1.
 // df/dx uses each spring's elastic Jacobian with the compressive term clamped (SPD, see
-// spring.h); df/dv holds spring damping and drag. Solved by Jacobi-preconditioned conjugate
-// gradient over the free particles only: pinned velocities are known, so their columns move to
+// spring.h); df/dv holds spring damping and drag. Solved by conjugate gradient preconditioned
+// with the inverses of the 3x3 diagonal blocks (block Jacobi) over the free particles only: pinned velocities are known, so their columns move to
 // the right-hand side. First order; unconditionally stable on an oscillator, where the amplitude
 // shrinks by 1/sqrt(1 + (h w)^2) a step.
 //
@@ -28,8 +29,10 @@ constexpr int kParallelParticles = 512;
 // 9 values and 9 column indices, and nothing to scatter or zero.
 class BackwardEuler final : public Integrator {
  public:
-  BackwardEuler(double tolerance, int max_iterations)
-      : tolerance_(tolerance), max_iterations_(max_iterations) {}
+  BackwardEuler(double tolerance, int max_iterations, bool block_preconditioner)
+      : tolerance_(tolerance),
+        max_iterations_(max_iterations),
+        block_preconditioner_(block_preconditioner) {}
 
   StepCounts step(OdeSystem& system, State& s, double h) override {
     ParticleSystem& ps = *system.particles();
@@ -50,9 +53,10 @@ class BackwardEuler final : public Integrator {
     }
     fill(ps, x, v, h);
 
-    const CgResult cg =
-        conjugateGradient([this, &ps](const Vector& in, Vector& out) { multiply(ps, in, out); },
-                          inverse_diagonal_, rhs_, dv_free_, tolerance_, max_iterations_);
+    const CgResult cg = conjugateGradient(
+        [this, &ps](const Vector& in, Vector& out) { multiply(ps, in, out); },
+        [this](const Vector& r, Vector& z) { precondition(r, z); }, rhs_, dv_free_, tolerance_,
+        max_iterations_);
     StepCounts counts{.accepted = 1, .derivative_evaluations = 1};
     counts.linear_iterations = cg.iterations;
     if (!cg.converged) counts.solver_failures = 1;
@@ -82,9 +86,9 @@ class BackwardEuler final : public Integrator {
     const int unknowns = 3 * static_cast<int>(free_particles_.size());
     blocks_.resize(ps.adjacency().other.size());
     diagonal_.resize(free_particles_.size());
+    inverse_block_.resize(free_particles_.size());
     rhs_.setZero(unknowns);
     dv_free_.setZero(unknowns);
-    inverse_diagonal_.setZero(unknowns);
   }
 
   // Per-incidence blocks, diagonal blocks and the right-hand side for this step.
@@ -126,7 +130,22 @@ class BackwardEuler final : public Integrator {
       }
       diagonal_[i] = diagonal;
       rhs_.segment<3>(3 * i) = rhs;
-      inverse_diagonal_.segment<3>(3 * i) = diagonal.diagonal().cwiseInverse();
+      // Block Jacobi: each particle's 3x3 block inverted whole. It keeps the coupling between a
+      // particle's own x, y and z through its springs' directions (beta u u^T), which the scalar
+      // diagonal drops; the block is SPD (mass plus PSD spring terms), so it inverts.
+      inverse_block_[i] = block_preconditioner_
+                              ? Mat3(diagonal.inverse())
+                              : Mat3(diagonal.diagonal().cwiseInverse().asDiagonal());
+    }
+  }
+
+  // z = (block diagonal)^-1 r.
+  void precondition(const Vector& r, Vector& z) const {
+    const int free_count = static_cast<int>(free_particles_.size());
+    z.resize(r.size());
+#pragma omp parallel for schedule(static) if (free_count >= kParallelParticles)
+    for (int i = 0; i < free_count; ++i) {
+      z.segment<3>(3 * i).noalias() = inverse_block_[i] * r.segment<3>(3 * i);
     }
   }
 
@@ -154,15 +173,18 @@ class BackwardEuler final : public Integrator {
   std::vector<int> free_particles_;          // (F) particle of each row block
   std::vector<ImplicitSpringBlock> blocks_;  // (2S) this step's block of each incidence
   std::vector<Mat3> diagonal_;               // (F) diagonal blocks
-  Vector f_, dv_known_, rhs_, dv_free_, inverse_diagonal_;
+  std::vector<Mat3> inverse_block_;          // (F) their inverses: the preconditioner
+  Vector f_, dv_known_, rhs_, dv_free_;
   double tolerance_;
   int max_iterations_;
+  bool block_preconditioner_;
 };
 
 }  // namespace
 
-std::unique_ptr<Integrator> makeBackwardEuler(double cg_tolerance, int cg_max_iterations) {
-  return std::make_unique<BackwardEuler>(cg_tolerance, cg_max_iterations);
+std::unique_ptr<Integrator> makeBackwardEuler(double cg_tolerance, int cg_max_iterations,
+                                              bool block_preconditioner) {
+  return std::make_unique<BackwardEuler>(cg_tolerance, cg_max_iterations, block_preconditioner);
 }
 
 }  // namespace mysim

@@ -26,6 +26,13 @@ double deterministicDot(const Vector& a, const Vector& b) {
 
 CgResult conjugateGradient(const LinearOperator& A, const Vector& inverse_diagonal, const Vector& b,
                            Vector& x, double tolerance, int max_iterations) {
+  return conjugateGradient(
+      A, [&](const Vector& r, Vector& z) { z = inverse_diagonal.cwiseProduct(r); }, b, x,
+      tolerance, max_iterations);
+}
+
+CgResult conjugateGradient(const LinearOperator& A, const Preconditioner& precondition,
+                           const Vector& b, Vector& x, double tolerance, int max_iterations) {
   const int n = static_cast<int>(b.size());
   Vector r(n), z(n), p(n), Ap(n);
   A(x, Ap);
@@ -46,7 +53,7 @@ CgResult conjugateGradient(const LinearOperator& A, const Vector& inverse_diagon
     result.converged = true;
     return result;
   }
-  z = inverse_diagonal.cwiseProduct(r);
+  precondition(r, z);
   p = z;
   double rz = deterministicDot(r, z);
   for (int k = 1; k <= max_iterations; ++k) {
@@ -61,7 +68,7 @@ CgResult conjugateGradient(const LinearOperator& A, const Vector& inverse_diagon
       result.converged = true;
       return result;
     }
-    z = inverse_diagonal.cwiseProduct(r);
+    precondition(r, z);
     const double rz_next = deterministicDot(r, z);
     p = z + (rz_next / rz) * p;
     rz = rz_next;

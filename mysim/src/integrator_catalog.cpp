@@ -24,7 +24,9 @@ const std::vector<IntegratorInfo>& integratorCatalog() {
       {"verlet", "", "velocity Verlet, order 2, symplectic", true,
        [](S) { return makeVelocityVerlet(); }},
       {"backward-euler", "", "Baraff-Witkin implicit Euler (1 Newton step, CG), order 1", true,
-       [](S s) { return makeBackwardEuler(s.cg_tolerance, s.cg_max_iterations); }},
+       [](S s) {
+         return makeBackwardEuler(s.cg_tolerance, s.cg_max_iterations, s.block_preconditioner);
+       }},
       {"dopri5", "", "adaptive Dormand-Prince 5(4), abs/rel tolerance", false,
        [](S s) { return makeDormandPrince(s.abs_tolerance, s.rel_tolerance); }, true},
   };

@@ -1,5 +1,6 @@
 #include "mysim/particle_system.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -16,7 +17,9 @@ constexpr int kParallelParticles = 512;
 ParticleSystem::ParticleSystem(Model model, BlowUpLimits limits)
     : model_(std::move(model)),
       limits_(limits),
-      adjacency_(SpringAdjacency::build(model_.particleCount(), model_.springs)) {
+      adjacency_(SpringAdjacency::build(model_.particleCount(), model_.springs)),
+      spring_table_(SpringTable::build(model_.springs)),
+      spring_force_(3 * static_cast<Eigen::Index>(model_.springs.size())) {
   // The energy scale a healthy run stays within: what it starts with, plus all that gravity can
   // release over the scene's extent, plus work wind and driven pins can do at that scale.
   const Vector& x = model_.start_position;
@@ -62,6 +65,11 @@ void ParticleSystem::force(double t, Eigen::Ref<const Vector> x, Eigen::Ref<cons
   gather(t, x, v, f, false);
 }
 
+void ParticleSystem::referenceForce(double t, Eigen::Ref<const Vector> x,
+                                    Eigen::Ref<const Vector> v, Eigen::Ref<Vector> f) const {
+  gatherPerEnd(t, x, v, f);
+}
+
 void ParticleSystem::acceleration(double t, Eigen::Ref<const Vector> x, Eigen::Ref<const Vector> v,
                                   Eigen::Ref<Vector> a) const {
   gather(t, x, v, a, true);
@@ -70,8 +78,68 @@ void ParticleSystem::acceleration(double t, Eigen::Ref<const Vector> x, Eigen::R
 void ParticleSystem::gather(double t, Eigen::Ref<const Vector> x, Eigen::Ref<const Vector> v,
                             Eigen::Ref<Vector> f, bool accelerations) const {
   const int n = particleCount();
+  const int springs = spring_table_.size();
   const Vec3 pin_acceleration =
       model_.pin_motion ? model_.pin_motion->acceleration(t) : Vec3::Zero();
+  const double* xs = x.data();
+  const double* vs = v.data();
+  double* fs = f.data();
+  double* fx = spring_force_.data();
+  double* fy = fx + springs;
+  double* fz = fy + springs;
+  const SpringAdjacency& a = adjacency_;
+  const Vec3 gravity = model_.gravity;
+  const double drag = model_.drag;
+  const Wind* wind = model_.wind ? &*model_.wind : nullptr;
+  // Blocks of springs a thread takes at a time: long enough for the vector loop, short enough
+  // to share out evenly.
+  constexpr int kBlock = 512;
+  const int blocks = (springs + kBlock - 1) / kBlock;
+#pragma omp parallel if (n >= kParallelParticles)
+  {
+    // 1. Every spring's force on its first end, once.
+#pragma omp for schedule(static)
+    for (int b = 0; b < blocks; ++b) {
+      springForces(spring_table_, xs, vs, fx, fy, fz, b * kBlock, std::min(springs, (b + 1) * kBlock));
+    }
+    // 2. Each particle's sum, in the adjacency's fixed order (the per-end loop's order).
+#pragma omp for schedule(static)
+    for (int p = 0; p < n; ++p) {
+      Vec3 fp = model_.mass[p] * gravity - drag * Eigen::Map<const Vec3>(vs + 3 * p);
+      if (wind) fp += windForce(*wind, p, t);
+      double sx = fp.x(), sy = fp.y(), sz = fp.z();
+      for (int e = a.offsets[p]; e < a.offsets[p + 1]; ++e) {
+        const int end = a.spring_end[e], s = end >> 1;
+        if (end & 1) {  // the second end: minus the force on the first
+          sx -= fx[s];
+          sy -= fy[s];
+          sz -= fz[s];
+        } else {
+          sx += fx[s];
+          sy += fy[s];
+          sz += fz[s];
+        }
+      }
+      if (accelerations) {
+        if (model_.pinned[p]) {
+          Eigen::Map<Vec3>(fs + 3 * p) = pin_acceleration;
+          continue;
+        }
+        const double inverse_mass = 1.0 / model_.mass[p];
+        sx *= inverse_mass;
+        sy *= inverse_mass;
+        sz *= inverse_mass;
+      }
+      fs[3 * p] = sx;
+      fs[3 * p + 1] = sy;
+      fs[3 * p + 2] = sz;
+    }
+  }
+}
+
+void ParticleSystem::gatherPerEnd(double t, Eigen::Ref<const Vector> x, Eigen::Ref<const Vector> v,
+                                  Eigen::Ref<Vector> f) const {
+  const int n = particleCount();
   const double* xs = x.data();
   const double* vs = v.data();
   double* fs = f.data();
@@ -84,8 +152,8 @@ void ParticleSystem::gather(double t, Eigen::Ref<const Vector> x, Eigen::Ref<con
     const Eigen::Map<const Vec3> xp(xs + 3 * p), vp(vs + 3 * p);
     Vec3 fp = model_.mass[p] * gravity - drag * vp;
     if (wind) fp += windForce(*wind, p, t);
-    // springForce() written out on scalars: one square root and one division per incidence,
-    // and no damping arithmetic for undamped springs (this loop is most of a step's time).
+    // springForce() written out on scalars, from each end: one square root and one division
+    // per incidence.
     double fx = fp.x(), fy = fp.y(), fz = fp.z();
     for (int e = a.offsets[p]; e < a.offsets[p + 1]; ++e) {
       const double* xq = xs + 3 * a.other[e];
@@ -102,16 +170,6 @@ void ParticleSystem::gather(double t, Eigen::Ref<const Vector> x, Eigen::Ref<con
       fx += scale * dx;
       fy += scale * dy;
       fz += scale * dz;
-    }
-    if (accelerations) {
-      if (model_.pinned[p]) {
-        Eigen::Map<Vec3>(fs + 3 * p) = pin_acceleration;
-        continue;
-      }
-      const double inverse_mass = 1.0 / model_.mass[p];
-      fx *= inverse_mass;
-      fy *= inverse_mass;
-      fz *= inverse_mass;
     }
     fs[3 * p] = fx;
     fs[3 * p + 1] = fy;

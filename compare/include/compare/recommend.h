@@ -34,6 +34,9 @@ struct Recommendation {
   std::optional<Choice> best, runner_up;
   int candidates = 0;  // rows that ran to the end with an error to judge
   int meeting = 0;     // of those, with error <= max_error
+  // Each engine's own cheapest choice under the bound (mysim: over all its integrators), the
+  // cheapest first: speed at equal accuracy, engine against engine.
+  std::vector<Choice> per_engine;
 };
 
 // Per scene and stiffness scale of the table, in the table's order. Only rows that ran to the

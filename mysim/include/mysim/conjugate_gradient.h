@@ -14,9 +14,15 @@ struct CgResult {
 // assembled (backward Euler applies its per-spring blocks directly).
 using LinearOperator = std::function<void(const Vector& x, Vector& y)>;
 
-// Jacobi-preconditioned conjugate gradient from the starting guess in x; stops when
+// z = P^-1 r for a symmetric positive definite preconditioner P.
+using Preconditioner = std::function<void(const Vector& r, Vector& z)>;
+
+// Preconditioned conjugate gradient from the starting guess in x; stops when
 // |b - A x| <= tolerance |b|. Dot products are summed in fixed chunks in a fixed order, so the
 // result does not depend on the number of threads.
+CgResult conjugateGradient(const LinearOperator& A, const Preconditioner& precondition,
+                           const Vector& b, Vector& x, double tolerance, int max_iterations);
+// The same with Jacobi's preconditioner, P^-1 = diag(inverse_diagonal).
 CgResult conjugateGradient(const LinearOperator& A, const Vector& inverse_diagonal, const Vector& b,
                            Vector& x, double tolerance, int max_iterations);
 

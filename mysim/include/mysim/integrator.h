@@ -30,6 +30,9 @@ struct IntegratorSettings {
   double rel_tolerance = 1e-6;   // adaptive: relative error bound
   double cg_tolerance = 1e-8;    // backward Euler: CG relative residual
   int cg_max_iterations = 1000;  // backward Euler
+  // Backward Euler's CG preconditioner: the inverses of the 3x3 diagonal blocks (default), or
+  // the plain diagonal (false; kept to measure what the blocks gain, docs/performance.md).
+  bool block_preconditioner = true;
 };
 
 // Advances a state by h. Owns its scratch buffers (allocated on first use, reused after), so one
@@ -65,7 +68,8 @@ std::unique_ptr<Integrator> makeTrapezoidal();
 std::unique_ptr<Integrator> makeRk4();
 std::unique_ptr<Integrator> makeSymplecticEuler();
 std::unique_ptr<Integrator> makeVelocityVerlet();
-std::unique_ptr<Integrator> makeBackwardEuler(double cg_tolerance, int cg_max_iterations);
+std::unique_ptr<Integrator> makeBackwardEuler(double cg_tolerance, int cg_max_iterations,
+                                              bool block_preconditioner = true);
 std::unique_ptr<Integrator> makeDormandPrince(double abs_tolerance, double rel_tolerance);
 
 }  // namespace mysim

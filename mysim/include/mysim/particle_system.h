@@ -5,6 +5,7 @@
 #include "mysim/model.h"
 #include "mysim/ode_system.h"
 #include "mysim/spring_adjacency.h"
+#include "mysim/spring_forces.h"
 
 namespace mysim {
 
@@ -38,11 +39,16 @@ class ParticleSystem final : public OdeSystem {
   State initialState() const override;
 
   // Total force on every particle (3N), pinned rows included (they are ignored by the caller).
-  // `f` must have size 3N. Gathered per particle from the spring adjacency, in parallel (OpenMP)
-  // when there are enough particles to pay for the threads; the result does not depend on the
-  // thread count.
+  // `f` must have size 3N. Every spring's force once (spring_forces.h, vectorised), then
+  // gathered per particle from the spring adjacency, both in parallel (OpenMP) when there are
+  // enough particles to pay for the threads; the result does not depend on the thread count.
+  // Not for two threads at once on one system: the spring pass writes a scratch array.
   void force(double t, Eigen::Ref<const Vector> x, Eigen::Ref<const Vector> v,
              Eigen::Ref<Vector> f) const;
+  // The same force by the plain per-end loop (each spring evaluated from both of its ends, one
+  // particle at a time): the reference the fast path is tested against.
+  void referenceForce(double t, Eigen::Ref<const Vector> x, Eigen::Ref<const Vector> v,
+                      Eigen::Ref<Vector> f) const;
   // a = f / m for free particles, the prescribed acceleration for pinned ones. `a`: size 3N.
   void acceleration(double t, Eigen::Ref<const Vector> x, Eigen::Ref<const Vector> v,
                     Eigen::Ref<Vector> a) const;
@@ -67,6 +73,10 @@ class ParticleSystem final : public OdeSystem {
   BlowUpLimits limits_;
   double energy_scale_ = 0.0;  // J, see the constructor
   SpringAdjacency adjacency_;  // derived from model_.springs once
+  SpringTable spring_table_;   // the same springs as arrays, for the per-spring pass
+  mutable Vector spring_force_;  // (3S) fx, then fy, then fz of every spring: scratch of gather()
+  void gatherPerEnd(double t, Eigen::Ref<const Vector> x, Eigen::Ref<const Vector> v,
+                    Eigen::Ref<Vector> out) const;
 };
 
 }  // namespace mysim

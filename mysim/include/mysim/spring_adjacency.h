@@ -20,6 +20,9 @@ struct SpringAdjacency {
   std::vector<int> offsets;    // (N + 1) incidences of particle p: [offsets[p], offsets[p+1])
   std::vector<int> other;      // (2S) the particle at the far end
   std::vector<int> parameter;  // (2S) index into `parameters`
+  // (2S) 2 s + 1 if the particle is spring s's second end (its force is minus the spring's
+  // force on the first end, spring_forces.h), 2 s if it is the first.
+  std::vector<int> spring_end;
   std::vector<Parameters> parameters;
 
   static SpringAdjacency build(int particle_count, const std::vector<Spring>& springs);

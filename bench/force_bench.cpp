@@ -20,7 +20,9 @@ double bytesPerEvaluation(const mysim::ParticleSystem& system) {
   return n * (3 * 8 * 3 + 8 + 4) + incidences * 8;
 }
 
-void forceBenchmark(benchmark::State& state, int threads) {
+// kernel: "fast" (every spring once, vectorised; the dispatch's pick), "baseline" (the same
+// without AVX2) or "reference" (the per-end loop it replaced), so each ratio comes from one run.
+void forceBenchmark(benchmark::State& state, int threads, const std::string& kernel = "fast") {
   const int n = static_cast<int>(state.range(0));
   const mysim::Scene scene = bench::hangingCloth(n);
   mysim::ParticleSystem system(mysim::buildModel(scene), scene.limits);
@@ -28,14 +30,21 @@ void forceBenchmark(benchmark::State& state, int threads) {
   const int n3 = 3 * system.particleCount();
   mysim::Vector f(n3);
   omp_set_num_threads(threads);
+  mysim::setSpringForcesSimd(kernel != "baseline");
+  state.SetLabel(kernel == "reference" ? "per-end reference" : mysim::springForcesKernel());
   std::chrono::duration<double> spent{};
   for (auto _ : state) {
     const auto start = std::chrono::steady_clock::now();
-    system.force(0.0, s.y.head(n3), s.y.tail(n3), f);
+    if (kernel == "reference") {
+      system.referenceForce(0.0, s.y.head(n3), s.y.tail(n3), f);
+    } else {
+      system.force(0.0, s.y.head(n3), s.y.tail(n3), f);
+    }
     benchmark::DoNotOptimize(f.data());
     spent += std::chrono::steady_clock::now() - start;
   }
   omp_set_num_threads(omp_get_num_procs());
+  mysim::setSpringForcesSimd(true);
   const double per_eval = spent.count() / state.iterations();
   const double bytes = bytesPerEvaluation(system);
   state.counters["particles"] = system.particleCount();
@@ -57,5 +66,14 @@ BENCHMARK(BM_ClothForce)
     ->Unit(benchmark::kMicrosecond)
     ->UseRealTime();
 BENCHMARK(BM_ClothForceOneThread)->Arg(128)->Arg(256)->Unit(benchmark::kMicrosecond)->UseRealTime();
+// The same sizes with the baseline (no AVX2) kernel and with the per-end loop, in the same run.
+void BM_ClothForceBaseline(benchmark::State& state) {
+  forceBenchmark(state, omp_get_num_procs(), "baseline");
+}
+void BM_ClothForceReference(benchmark::State& state) {
+  forceBenchmark(state, omp_get_num_procs(), "reference");
+}
+BENCHMARK(BM_ClothForceBaseline)->Arg(128)->Arg(256)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(BM_ClothForceReference)->Arg(128)->Arg(256)->Unit(benchmark::kMicrosecond)->UseRealTime();
 
 }  // namespace

@@ -109,16 +109,13 @@ void ParticleSystem::gather(double t, Eigen::Ref<const Vector> x, Eigen::Ref<con
       if (wind) fp += windForce(*wind, p, t);
       double sx = fp.x(), sy = fp.y(), sz = fp.z();
       for (int e = a.offsets[p]; e < a.offsets[p + 1]; ++e) {
+        // The second end gets minus the force on the first: a sign, not a branch (which end
+        // comes next is unpredictable); x + (-1 y) is exactly x - y, so the bits are the same.
         const int end = a.spring_end[e], s = end >> 1;
-        if (end & 1) {  // the second end: minus the force on the first
-          sx -= fx[s];
-          sy -= fy[s];
-          sz -= fz[s];
-        } else {
-          sx += fx[s];
-          sy += fy[s];
-          sz += fz[s];
-        }
+        const double sign = 1.0 - 2.0 * (end & 1);
+        sx += sign * fx[s];
+        sy += sign * fy[s];
+        sz += sign * fz[s];
       }
       if (accelerations) {
         if (model_.pinned[p]) {

@@ -6,7 +6,7 @@ import json
 import sys
 
 
-def main(bench_json, memory_json, baseline_json, out_csv):
+def main(bench_json, memory_json, baseline_json, out_csv, *equal_accuracy):
     runs = {}
     data = json.load(open(bench_json))
     for b in data["benchmarks"]:
@@ -31,8 +31,14 @@ def main(bench_json, memory_json, baseline_json, out_csv):
         r = runs[f"BM_ClothForce/{n}"]
         add(f"force evaluation {n}x{n}: time per particle", r["ns_per_particle"], "ns")
         add(f"force evaluation {n}x{n}: bytes moved per evaluation", r["bytes_per_eval"], "B")
-        goal = ("goal <= 2: " + ("met" if r["ratio_to_bound"] <= 2 else "missed")) if n == 128 else ""
+        goal = ("goal <= 2: " + ("met" if r["ratio_to_bound"] <= 2 else "missed")) if n in (128, 256) else ""
         add(f"force evaluation {n}x{n}: measured / bandwidth bound", r["ratio_to_bound"], "x", goal)
+    for n in (128, 256):
+        fast = runs[f"BM_ClothForce/{n}"]["real_time"]
+        add(f"force evaluation {n}x{n}: baseline (no AVX2) kernel / AVX2",
+            runs[f"BM_ClothForceBaseline/{n}"]["real_time"] / fast, "x")
+        add(f"force evaluation {n}x{n}: per-end reference loop / every spring once",
+            runs[f"BM_ClothForceReference/{n}"]["real_time"] / fast, "x")
     one = runs["BM_ClothForceOneThread/256"]["real_time"]
     two = runs["BM_ClothForce/256"]["real_time"]
     add("force evaluation 256x256: 2 threads over 1", one / two, "x")
@@ -61,6 +67,23 @@ def main(bench_json, memory_json, baseline_json, out_csv):
         r = runs[f"BM_BackwardEulerScaling/{n}"]
         add(f"backward-euler step {n}x{n}", r["real_time"], "us")
         add(f"backward-euler CG iterations per step {n}x{n}", r["cg_iterations_per_step"], "")
+    iterations = {}
+    for per_second in (60, 240):
+        for n in (32, 64, 128, 256):
+            for pre in ("block-jacobi", "jacobi"):
+                r = runs[f"BM_LargeImplicitStep/{per_second}/{n}/{pre}"]
+                iterations[(per_second, n, pre)] = r["cg_iterations_per_step"]
+                goal = ""
+                if per_second == 60 and n == 128 and pre == "block-jacobi":
+                    goal = "goal < 10 ms: " + ("met" if r["real_time"] < 10 else "missed")
+                add(f"backward-euler h = 1/{per_second} s, {n}x{n}, {pre}, 1 thread: step", r["real_time"], "ms", goal)
+                add(f"backward-euler h = 1/{per_second} s, {n}x{n}, {pre}: CG iterations per step",
+                    r["cg_iterations_per_step"], "")
+        # Growth with size: 4x the particles per row; sqrt(N) growth is 2x per row.
+        growth = max(iterations[(per_second, 2 * n, "block-jacobi")] / iterations[(per_second, n, "block-jacobi")]
+                     for n in (32, 64, 128))
+        add(f"backward-euler h = 1/{per_second} s: CG iterations, largest growth per 4x particles", growth, "x",
+            "goal <= 2 (sqrt N): " + ("met" if growth <= 2.05 else "missed"))
     t1 = runs["BM_Rk4Threads/256/1"]["real_time"]
     t2 = runs["BM_Rk4Threads/256/2"]["real_time"]
     add("RK4 step 256x256: 1 thread over 2", t1 / t2, "x", "goal >= 1.6: " + ("met" if t1 / t2 >= 1.6 else "missed"))
@@ -78,6 +101,17 @@ def main(bench_json, memory_json, baseline_json, out_csv):
         "goal < 1024: " + ("met" if total < 1024 else "missed"))
     add("  of which above the process baseline (a 1-particle run)",
         (mem["peak_resident_bytes"] - base["peak_resident_bytes"]) / mem["particles"], "B")
+    for path in equal_accuracy:  # springcheck recommend --json on a scene: each engine's best
+        answer = json.load(open(path))
+        for r in answer["recommendations"]:
+            scene = r["scene"].rsplit("/", 1)[-1].removesuffix(".json")
+            for c in r.get("per_engine", []):
+                add(f"{scene}, error <= {answer['max_error']:g} m: {c['engine']} best "
+                    f"({c['integrator']}, dt {c['dt']:g}) realtime factor", c["realtime_factor"], "x")
+            ratio = r.get("mysim_over_bullet_realtime")
+            if ratio is not None:
+                add(f"{scene}: mysim's best / Bullet's best realtime factor at equal accuracy", ratio, "x",
+                    "goal >= 10: " + ("met" if ratio >= 10 else "missed"))
     with open(out_csv, "w") as f:
         f.write("quantity,value,unit,goal\n")
         for r in rows:
@@ -85,4 +119,4 @@ def main(bench_json, memory_json, baseline_json, out_csv):
 
 
 if __name__ == "__main__":
-    main(*sys.argv[1:5])
+    main(*sys.argv[1:])

@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Benchmarks: mysim against the hardware and against Bullet, side by side in one run (medians of
-# 3 repetitions), plus a peak-memory probe. Writes out/bench/ and prints the table that
-# docs/performance.md keeps. Takes about 10 minutes on 2 cores.
+# 3 repetitions), a peak-memory probe, and speed at equal accuracy (each engine's cheapest
+# setting under 1 mm of error on the hanging cloth and the cloth on the sphere, springcheck
+# recommend). Writes out/bench/, prints the table that docs/performance.md keeps, and copies it
+# to bench/results/MACHINE/ (MACHINE: $SPRINGCHECK_MACHINE, else host name and core count), one
+# folder per machine so every figure says where it came from. About 20 minutes on 2 cores.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh default springcheck springcheck_bench
@@ -11,5 +14,23 @@ build/release/bench/springcheck_bench --benchmark_repetitions=3 --benchmark_repo
   --benchmark_min_time=0.5 --benchmark_out="$OUT/bench.json" --benchmark_out_format=json
 build/release/compare/springcheck run bench/cloth256_rk4.json --out "$OUT/memory" >/dev/null
 build/release/compare/springcheck run scenes/seed/circle.json --out "$OUT/memory_baseline" >/dev/null
+for scene in cloth_hanging cloth_on_sphere; do
+  build/release/compare/springcheck recommend "scenes/matched/$scene.json" --max-error 1e-3 --repeats 3 \
+    --table "$OUT/equal_accuracy_$scene.csv" --json "$OUT/equal_accuracy_$scene.json" >/dev/null || [ $? -eq 1 ]
+done
 python3 bench/summarize.py "$OUT/bench.json" "$OUT/memory/summary.json" \
-  "$OUT/memory_baseline/summary.json" "$OUT/summary.csv"
+  "$OUT/memory_baseline/summary.json" "$OUT/summary.csv" \
+  "$OUT/equal_accuracy_cloth_hanging.json" "$OUT/equal_accuracy_cloth_on_sphere.json"
+machine=${SPRINGCHECK_MACHINE:-$(hostname -s)-$(nproc)cores}
+mkdir -p "bench/results/$machine"
+cp "$OUT/summary.csv" "bench/results/$machine/summary.csv"
+{
+  echo "machine: $machine"
+  grep -m1 "model name" /proc/cpuinfo | sed 's/^model name\s*: /cpu: /'
+  echo "cores: $(nproc)"
+  echo "memory: $(awk '/MemTotal/ { printf "%.1f GiB", $2 / 1048576 }' /proc/meminfo)"
+  echo "date: $(date -u +%Y-%m-%d)"
+  echo "commit: $(git rev-parse --short HEAD 2>/dev/null || echo unknown)"
+  echo "command: scripts/run-bench.sh"
+} >"bench/results/$machine/machine.txt"
+echo "results: bench/results/$machine/"

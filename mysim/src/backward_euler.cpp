@@ -106,7 +106,7 @@ class BackwardEuler final : public Integrator {
       Vec3 rhs = h * f_.segment<3>(3 * p);
       for (int e = a.offsets[p]; e < a.offsets[p + 1]; ++e) {
         const int q = a.other[e];
-        const SpringAdjacency::Parameters& sp = a.parameters[a.parameter[e]];
+        const Spring& sp = model.springs[a.spring[e]];
         // implicitSpringBlock() (tested against the Mat3 Jacobians), inlined here.
         const Vec3 d = x.segment<3>(3 * q) - xp;
         const double inv_l = 1.0 / d.norm();

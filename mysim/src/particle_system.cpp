@@ -18,8 +18,8 @@ ParticleSystem::ParticleSystem(Model model, BlowUpLimits limits)
     : model_(std::move(model)),
       limits_(limits),
       adjacency_(SpringAdjacency::build(model_.particleCount(), model_.springs)),
-      spring_table_(SpringTable::build(model_.springs)),
-      spring_force_(3 * static_cast<Eigen::Index>(model_.springs.size())) {
+      spring_scale_(static_cast<Eigen::Index>(model_.springs.size())) {
+  for (const Spring& s : model_.springs) damped_springs_ |= s.damping != 0.0;
   // The energy scale a healthy run stays within: what it starts with, plus all that gravity can
   // release over the scene's extent, plus work wind and driven pins can do at that scale.
   const Vector& x = model_.start_position;
@@ -78,15 +78,13 @@ void ParticleSystem::acceleration(double t, Eigen::Ref<const Vector> x, Eigen::R
 void ParticleSystem::gather(double t, Eigen::Ref<const Vector> x, Eigen::Ref<const Vector> v,
                             Eigen::Ref<Vector> f, bool accelerations) const {
   const int n = particleCount();
-  const int springs = spring_table_.size();
+  const int springs = static_cast<int>(model_.springs.size());
   const Vec3 pin_acceleration =
       model_.pin_motion ? model_.pin_motion->acceleration(t) : Vec3::Zero();
   const double* xs = x.data();
   const double* vs = v.data();
   double* fs = f.data();
-  double* fx = spring_force_.data();
-  double* fy = fx + springs;
-  double* fz = fy + springs;
+  double* scale = spring_scale_.data();
   const SpringAdjacency& a = adjacency_;
   const Vec3 gravity = model_.gravity;
   const double drag = model_.drag;
@@ -97,25 +95,26 @@ void ParticleSystem::gather(double t, Eigen::Ref<const Vector> x, Eigen::Ref<con
   const int blocks = (springs + kBlock - 1) / kBlock;
 #pragma omp parallel if (n >= kParallelParticles)
   {
-    // 1. Every spring's force on its first end, once.
+    // 1. Every spring's force scale, once.
 #pragma omp for schedule(static)
     for (int b = 0; b < blocks; ++b) {
-      springForces(spring_table_, xs, vs, fx, fy, fz, b * kBlock, std::min(springs, (b + 1) * kBlock));
+      springScales(model_.springs, damped_springs_, xs, vs, scale, b * kBlock,
+                   std::min(springs, (b + 1) * kBlock));
     }
-    // 2. Each particle's sum, in the adjacency's fixed order (the per-end loop's order).
+    // 2. Each particle's sum, in the adjacency's fixed order: scale (x_q - x_p) per spring, the
+    // per-end loop's own arithmetic.
 #pragma omp for schedule(static)
     for (int p = 0; p < n; ++p) {
+      const double* xp = xs + 3 * p;
       Vec3 fp = model_.mass[p] * gravity - drag * Eigen::Map<const Vec3>(vs + 3 * p);
       if (wind) fp += windForce(*wind, p, t);
       double sx = fp.x(), sy = fp.y(), sz = fp.z();
       for (int e = a.offsets[p]; e < a.offsets[p + 1]; ++e) {
-        // The second end gets minus the force on the first: a sign, not a branch (which end
-        // comes next is unpredictable); x + (-1 y) is exactly x - y, so the bits are the same.
-        const int end = a.spring_end[e], s = end >> 1;
-        const double sign = 1.0 - 2.0 * (end & 1);
-        sx += sign * fx[s];
-        sy += sign * fy[s];
-        sz += sign * fz[s];
+        const double* xq = xs + 3 * a.other[e];
+        const double k = scale[a.spring[e]];
+        sx += k * (xq[0] - xp[0]);
+        sy += k * (xq[1] - xp[1]);
+        sz += k * (xq[2] - xp[2]);
       }
       if (accelerations) {
         if (model_.pinned[p]) {
@@ -154,7 +153,7 @@ void ParticleSystem::gatherPerEnd(double t, Eigen::Ref<const Vector> x, Eigen::R
     double fx = fp.x(), fy = fp.y(), fz = fp.z();
     for (int e = a.offsets[p]; e < a.offsets[p + 1]; ++e) {
       const double* xq = xs + 3 * a.other[e];
-      const SpringAdjacency::Parameters& s = a.parameters[a.parameter[e]];
+      const Spring& s = model_.springs[a.spring[e]];
       const double dx = xq[0] - xp.x(), dy = xq[1] - xp.y(), dz = xq[2] - xp.z();
       const double inv_l = 1.0 / std::sqrt(dx * dx + dy * dy + dz * dz);
       // F = [k (l - rest) + c u.w] u = [k (1 - rest / l) + c (d.w) / l^2] d
@@ -242,7 +241,7 @@ double ParticleSystem::pinPower(const State& state) const {
     Vec3 on_pin = Vec3::Zero();
     for (int e = adjacency_.offsets[p]; e < adjacency_.offsets[p + 1]; ++e) {
       const int q = adjacency_.other[e];
-      const SpringAdjacency::Parameters& sp = adjacency_.parameters[adjacency_.parameter[e]];
+      const Spring& sp = model_.springs[adjacency_.spring[e]];
       on_pin += springForce(x.segment<3>(3 * p), x.segment<3>(3 * q), v.segment<3>(3 * p),
                             v.segment<3>(3 * q), sp.rest_length, sp.stiffness, sp.damping);
     }

@@ -39,7 +39,7 @@ class ParticleSystem final : public OdeSystem {
   State initialState() const override;
 
   // Total force on every particle (3N), pinned rows included (they are ignored by the caller).
-  // `f` must have size 3N. Every spring's force once (spring_forces.h, vectorised), then
+  // `f` must have size 3N. Every spring's force scale once (spring_forces.h, vectorised), then
   // gathered per particle from the spring adjacency, both in parallel (OpenMP) when there are
   // enough particles to pay for the threads; the result does not depend on the thread count.
   // Not for two threads at once on one system: the spring pass writes a scratch array.
@@ -73,8 +73,8 @@ class ParticleSystem final : public OdeSystem {
   BlowUpLimits limits_;
   double energy_scale_ = 0.0;  // J, see the constructor
   SpringAdjacency adjacency_;  // derived from model_.springs once
-  SpringTable spring_table_;   // the same springs as arrays, for the per-spring pass
-  mutable Vector spring_force_;  // (3S) fx, then fy, then fz of every spring: scratch of gather()
+  bool damped_springs_ = false;  // any spring damping: the per-spring pass reads velocities
+  mutable Vector spring_scale_;  // (S) each spring's force scale: scratch of gather()
   void gatherPerEnd(double t, Eigen::Ref<const Vector> x, Eigen::Ref<const Vector> v,
                     Eigen::Ref<Vector> out) const;
 };

@@ -2,6 +2,7 @@
 """Turns the benchmark JSON (medians of repeated runs) and the memory probe into the table of
 docs/performance.md: the figures, the mysim / Bullet ratios and each goal met or not. Reads
 numbers, computes ratios between them; no physics."""
+import csv
 import json
 import sys
 
@@ -112,10 +113,11 @@ def main(bench_json, memory_json, baseline_json, out_csv, *equal_accuracy):
             if ratio is not None:
                 add(f"{scene}: mysim's best / Bullet's best realtime factor at equal accuracy", ratio, "x",
                     "goal >= 10: " + ("met" if ratio >= 10 else "missed"))
-    with open(out_csv, "w") as f:
-        f.write("quantity,value,unit,goal\n")
+    with open(out_csv, "w", newline="") as f:  # quoted: quantities hold commas
+        writer = csv.writer(f)
+        writer.writerow(["quantity", "value", "unit", "goal"])
         for r in rows:
-            f.write(f"{r[0]},{r[1]},{r[2]},{r[3]}\n")
+            writer.writerow([r[0], f"{r[1]:.6g}", r[2], r[3]])
 
 
 if __name__ == "__main__":

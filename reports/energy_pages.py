@@ -7,10 +7,6 @@ from report_style import Page, coincident, draw_coincidences, number, plot_area,
 FLOOR = 1e-11
 
 
-def engine_key(ctx, engine):
-    return ctx.styles.key(engine["name"], engine["integrator"] if engine["name"] == "mysim" else "")
-
-
 def label(engine):
     plain = engine["name"] == "mysim" and engine["integrator"]
     return engine["name"] + (f" ({engine['integrator']})" if plain else "")
@@ -31,7 +27,7 @@ def comparison_page(c):
         engines = [e for e in c["engines"] if e["name"] in drift]
         reference = None
         if damped:
-            reference = next((e for e in engines if engine_key(ctx, e) == "mysim:rk4"), None)
+            reference = next((e for e in engines if ctx.styles.key_of(e) == "mysim:rk4"), None)
         notes, drawn = [], {}
         for e in engines:
             series = drift[e["name"]]
@@ -43,7 +39,7 @@ def comparison_page(c):
             else:
                 pts = [(number(t), abs(v)) for t, v in series.items()]
             pts = sorted((t, max(v, FLOOR)) for t, v in pts)
-            kw = ctx.styles.line(engine_key(ctx, e))
+            kw = ctx.styles.line(ctx.styles.key_of(e))
             kw["marker"] = None
             drawn[label(e)] = (pts, kw)
             ax.semilogy(*zip(*pts), label=label(e) + ("" if e["status"] == "ok" else f" [{e['status']}]"), **kw)

@@ -44,6 +44,10 @@ class StyleTable:
             return "mysim:rk4"
         return engine
 
+    def key_of(self, engine):
+        """The style key of a manifest engine entry (name and what stepped it)."""
+        return self.key(engine["name"], engine["integrator"])
+
     def of(self, key):
         """(colour, marker) of a series key; unknown keys get the next external style."""
         if key in STYLES:

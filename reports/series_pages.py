@@ -7,11 +7,6 @@ from report_style import Page, coincidence_note, coincident, coincident_groups, 
 PER_PAGE = 9
 
 
-def engine_key(ctx, name, comparison):
-    engine = next((e for e in comparison["engines"] if e["name"] == name), {"integrator": ""})
-    return ctx.styles.key(name, engine["integrator"] if name == "mysim" else "")
-
-
 def panels_page(key, title, caption, chosen, column, scale, ylabel):
     def draw(fig, ctx):
         cols = min(3, len(chosen))
@@ -25,7 +20,8 @@ def panels_page(key, title, caption, chosen, column, scale, ylabel):
                 value = number(r[column])
                 if value is not None:
                     series[r["engine"]].append((number(r["t"]), scale * value))
-            series = {(engine_key(ctx, n, c) if n == "mysim" else n): pts for n, pts in series.items()}
+            integrators = {e["name"]: e["integrator"] for e in c["engines"]}
+            series = {ctx.styles.key(n, integrators.get(n, "")): pts for n, pts in series.items()}
             for group in coincident_groups(coincident(series)):
                 notes.append(f"On {c['scene']}: " + coincidence_note(group))
             for label, pts in series.items():  # plain "mysim" is named by its integrator

@@ -17,8 +17,8 @@ constexpr int kParallelParticles = 512;
 //   (M - h df/dv - h^2 df/dx) dv = h (f0 + h df/dx v0),   v1 = v0 + dv,   x1 = x0 + h v1.
 // df/dx uses each spring's elastic Jacobian with the compressive term clamped (SPD, see
 // spring.h); df/dv holds spring damping and drag. Solved by conjugate gradient preconditioned
-// with the inverses of the 3x3 diagonal blocks (block Jacobi) over the free particles only: pinned velocities are known, so their columns move to
-// the right-hand side. First order; unconditionally stable on an oscillator, where the amplitude
+// with the inverses of the 3x3 diagonal blocks (block Jacobi) over the free particles only:
+// pinned velocities are known, so their columns move to the right-hand side. First order; unconditionally stable on an oscillator, where the amplitude
 // shrinks by 1/sqrt(1 + (h w)^2) a step.
 //
 // The matrix is never assembled. Each spring's block is alpha I + beta u u^T

@@ -24,13 +24,6 @@ double deterministicDot(const Vector& a, const Vector& b) {
   return sum;
 }
 
-CgResult conjugateGradient(const LinearOperator& A, const Vector& inverse_diagonal, const Vector& b,
-                           Vector& x, double tolerance, int max_iterations) {
-  return conjugateGradient(
-      A, [&](const Vector& r, Vector& z) { z = inverse_diagonal.cwiseProduct(r); }, b, x,
-      tolerance, max_iterations);
-}
-
 CgResult conjugateGradient(const LinearOperator& A, const Preconditioner& precondition,
                            const Vector& b, Vector& x, double tolerance, int max_iterations) {
   const int n = static_cast<int>(b.size());

@@ -75,6 +75,12 @@ void ParticleSystem::acceleration(double t, Eigen::Ref<const Vector> x, Eigen::R
   gather(t, x, v, a, true);
 }
 
+Vec3 ParticleSystem::externalForce(int p, double t, const double* v) const {
+  Vec3 f = model_.mass[p] * model_.gravity - model_.drag * Eigen::Map<const Vec3>(v + 3 * p);
+  if (model_.wind) f += windForce(*model_.wind, p, t);
+  return f;
+}
+
 void ParticleSystem::gather(double t, Eigen::Ref<const Vector> x, Eigen::Ref<const Vector> v,
                             Eigen::Ref<Vector> f, bool accelerations) const {
   const int n = particleCount();
@@ -86,9 +92,6 @@ void ParticleSystem::gather(double t, Eigen::Ref<const Vector> x, Eigen::Ref<con
   double* fs = f.data();
   double* scale = spring_scale_.data();
   const SpringAdjacency& a = adjacency_;
-  const Vec3 gravity = model_.gravity;
-  const double drag = model_.drag;
-  const Wind* wind = model_.wind ? &*model_.wind : nullptr;
   // Blocks of springs a thread takes at a time: long enough for the vector loop, short enough
   // to share out evenly.
   constexpr int kBlock = 512;
@@ -106,8 +109,7 @@ void ParticleSystem::gather(double t, Eigen::Ref<const Vector> x, Eigen::Ref<con
 #pragma omp for schedule(static)
     for (int p = 0; p < n; ++p) {
       const double* xp = xs + 3 * p;
-      Vec3 fp = model_.mass[p] * gravity - drag * Eigen::Map<const Vec3>(vs + 3 * p);
-      if (wind) fp += windForce(*wind, p, t);
+      const Vec3 fp = externalForce(p, t, vs);
       double sx = fp.x(), sy = fp.y(), sz = fp.z();
       for (int e = a.offsets[p]; e < a.offsets[p + 1]; ++e) {
         const double* xq = xs + 3 * a.other[e];
@@ -140,14 +142,10 @@ void ParticleSystem::gatherPerEnd(double t, Eigen::Ref<const Vector> x, Eigen::R
   const double* vs = v.data();
   double* fs = f.data();
   const SpringAdjacency& a = adjacency_;
-  const Vec3 gravity = model_.gravity;
-  const double drag = model_.drag;
-  const Wind* wind = model_.wind ? &*model_.wind : nullptr;
 #pragma omp parallel for schedule(static) if (n >= kParallelParticles)
   for (int p = 0; p < n; ++p) {
     const Eigen::Map<const Vec3> xp(xs + 3 * p), vp(vs + 3 * p);
-    Vec3 fp = model_.mass[p] * gravity - drag * vp;
-    if (wind) fp += windForce(*wind, p, t);
+    const Vec3 fp = externalForce(p, t, vs);
     // springForce() written out on scalars, from each end: one square root and one division
     // per incidence.
     double fx = fp.x(), fy = fp.y(), fz = fp.z();

@@ -19,7 +19,6 @@ namespace {
 
 struct WindowState {
   ViewerSession* session = nullptr;
-  const WindowOptions* options = nullptr;
   bool dragging = false;
   double last_x = 0, last_y = 0;
   bool screenshot_requested = false;  // p: saved after the next frame is drawn
@@ -325,8 +324,7 @@ void render(ViewerSession& session, const Text& text, int width, int height,
     const float x = vx + 10, max_width = l.view_width - 20;
     float y = vy + 6;
     std::string stepped = e.integrator;
-    if (e.engine.starts_with("mysim") && session.activeIntegrator() != session.integrator() &&
-        e.engine == "mysim") {
+    if (e.engine == "mysim" && session.activeIntegrator() != session.integrator()) {
       stepped += " (" + session.integrator() + " needs particles)";
     }
     y = text.drawWrapped(x, y, e.engine + (stepped.empty() ? "" : ": " + stepped), max_width,
@@ -399,7 +397,7 @@ int runWindow(ViewerSession& session, const WindowOptions& options) {
     std::cerr << "error: " << error << '\n';
     return close(1);
   }
-  WindowState ws{&session, &options};
+  WindowState ws{&session};
   glfwSetWindowUserPointer(window, &ws);
   glfwSetKeyCallback(window, keyCallback);
   glfwSetMouseButtonCallback(window, mouseButtonCallback);

@@ -22,9 +22,6 @@ using Preconditioner = std::function<void(const Vector& r, Vector& z)>;
 // result does not depend on the number of threads.
 CgResult conjugateGradient(const LinearOperator& A, const Preconditioner& precondition,
                            const Vector& b, Vector& x, double tolerance, int max_iterations);
-// The same with Jacobi's preconditioner, P^-1 = diag(inverse_diagonal).
-CgResult conjugateGradient(const LinearOperator& A, const Vector& inverse_diagonal, const Vector& b,
-                           Vector& x, double tolerance, int max_iterations);
 
 // Summed in fixed chunks (in parallel for long vectors), added in order.
 double deterministicDot(const Vector& a, const Vector& b);

@@ -73,6 +73,8 @@ class ParticleSystem final : public OdeSystem {
   BlowUpLimits limits_;
   double energy_scale_ = 0.0;  // J, see the constructor
   SpringAdjacency adjacency_;  // derived from model_.springs once
+  // Gravity, drag and wind on particle p: what both force loops start each sum from.
+  Vec3 externalForce(int p, double t, const double* v) const;
   bool damped_springs_ = false;  // any spring damping: the per-spring pass reads velocities
   mutable Vector spring_scale_;  // (S) each spring's force scale: scratch of gather()
   void gatherPerEnd(double t, Eigen::Ref<const Vector> x, Eigen::Ref<const Vector> v,

@@ -144,6 +144,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"UnknownIntegrator",
                 [] { return with(validCloth(), "/integrator/name"_json_pointer, "leapfrog"); },
                 "integrator.name", "unknown integrator 'leapfrog'"},
+        BadCase{"UnknownPreconditioner",
+                [] {
+                  return with(validCloth(), "/integrator/cg_preconditioner"_json_pointer,
+                              "multigrid");
+                },
+                "integrator.cg_preconditioner", "jacobi, block-jacobi, ssor"},
         BadCase{"SecondOrderIntegratorOnCircle",
                 [] {
                   return json::parse(R"({"system": {"type": "circle"},

@@ -25,12 +25,30 @@ const std::vector<IntegratorInfo>& integratorCatalog() {
        [](S) { return makeVelocityVerlet(); }},
       {"backward-euler", "", "Baraff-Witkin implicit Euler (1 Newton step, CG), order 1", true,
        [](S s) {
-         return makeBackwardEuler(s.cg_tolerance, s.cg_max_iterations, s.block_preconditioner);
+         return makeBackwardEuler(s.cg_tolerance, s.cg_max_iterations, s.preconditioner);
        }},
       {"dopri5", "", "adaptive Dormand-Prince 5(4), abs/rel tolerance", false,
        [](S s) { return makeDormandPrince(s.abs_tolerance, s.rel_tolerance); }, true},
   };
   return catalog;
+}
+
+const char* preconditionerName(CgPreconditioner preconditioner) {
+  switch (preconditioner) {
+    case CgPreconditioner::Jacobi: return "jacobi";
+    case CgPreconditioner::BlockJacobi: return "block-jacobi";
+    case CgPreconditioner::Ssor: return "ssor";
+  }
+  return "?";
+}
+
+std::expected<CgPreconditioner, std::string> preconditionerByName(std::string_view name) {
+  for (CgPreconditioner p :
+       {CgPreconditioner::Jacobi, CgPreconditioner::BlockJacobi, CgPreconditioner::Ssor}) {
+    if (name == preconditionerName(p)) return p;
+  }
+  return std::unexpected("unknown CG preconditioner '" + clip(std::string(name), 40) +
+                         "'; expected one of jacobi, block-jacobi, ssor");
 }
 
 const IntegratorInfo* findIntegrator(std::string_view name) {

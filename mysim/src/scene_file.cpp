@@ -280,6 +280,11 @@ Scene readScene(const json& root, const std::vector<EngineSection>& sections) {
   is.cg_tolerance = integ.positive("cg_tolerance", is.cg_tolerance);
   is.cg_max_iterations =
       static_cast<int>(integ.integer("cg_max_iterations", 1, 1'000'000, is.cg_max_iterations));
+  if (integ.has("cg_preconditioner")) {
+    auto preconditioner = preconditionerByName(integ.text("cg_preconditioner", ""));
+    if (!preconditioner) throw FieldError{"integrator.cg_preconditioner", preconditioner.error()};
+    is.preconditioner = *preconditioner;
+  }
   integ.refuseUnknown("docs/scenes.md");
 
   if (top.has("output")) {

@@ -24,15 +24,21 @@ struct StepCounts {
   StepCounts& operator+=(const StepCounts& o);
 };
 
+// Backward Euler's CG preconditioner (docs/performance.md measures each): symmetric
+// successive over-relaxation with the 3x3 blocks (the default: fewest iterations and least time
+// from 64 x 64 up), the inverses of the 3x3 diagonal blocks, or the plain diagonal.
+enum class CgPreconditioner { Jacobi, BlockJacobi, Ssor };
+const char* preconditionerName(CgPreconditioner preconditioner);
+// By name ("jacobi", "block-jacobi", "ssor"), or an error listing them.
+std::expected<CgPreconditioner, std::string> preconditionerByName(std::string_view name);
+
 struct IntegratorSettings {
   std::string name = "rk4";
   double abs_tolerance = 1e-6;   // adaptive: per-component absolute error bound
   double rel_tolerance = 1e-6;   // adaptive: relative error bound
   double cg_tolerance = 1e-8;    // backward Euler: CG relative residual
   int cg_max_iterations = 1000;  // backward Euler
-  // Backward Euler's CG preconditioner: the inverses of the 3x3 diagonal blocks (default), or
-  // the plain diagonal (false; kept to measure what the blocks gain, docs/performance.md).
-  bool block_preconditioner = true;
+  CgPreconditioner preconditioner = CgPreconditioner::Ssor;  // backward Euler
 };
 
 // Advances a state by h. Owns its scratch buffers (allocated on first use, reused after), so one
@@ -68,8 +74,9 @@ std::unique_ptr<Integrator> makeTrapezoidal();
 std::unique_ptr<Integrator> makeRk4();
 std::unique_ptr<Integrator> makeSymplecticEuler();
 std::unique_ptr<Integrator> makeVelocityVerlet();
-std::unique_ptr<Integrator> makeBackwardEuler(double cg_tolerance, int cg_max_iterations,
-                                              bool block_preconditioner = true);
+std::unique_ptr<Integrator> makeBackwardEuler(
+    double cg_tolerance, int cg_max_iterations,
+    CgPreconditioner preconditioner = CgPreconditioner::Ssor);
 std::unique_ptr<Integrator> makeDormandPrince(double abs_tolerance, double rel_tolerance);
 
 }  // namespace mysim

@@ -1,0 +1,101 @@
+#include "mysim/spring_block_matrix.h"
+
+#include <Eigen/LU>
+#include <algorithm>
+
+namespace mysim {
+namespace {
+
+// Below this many rows one thread is faster (see particle_system.cpp).
+constexpr int kParallelRows = 512;
+
+// sum over entries [begin, end) of row's neighbours' (alpha x_j + s (s . x_j)).
+inline Vec3 neighbourSum(const std::vector<SpringBlockMatrix::Block>& blocks, const auto* entries,
+                         int begin, int end, const double* x) {
+  Vec3 sum = Vec3::Zero();
+  for (int e = begin; e < end; ++e) {
+    const SpringBlockMatrix::Block& b = blocks[entries[e].spring];
+    const Eigen::Map<const Vec3> xj(x + 3 * entries[e].column);
+    sum += b.alpha * xj + b.s.dot(xj) * b.s;
+  }
+  return sum;
+}
+
+}  // namespace
+
+SpringBlockMatrix::SpringBlockMatrix(const SpringAdjacency& adjacency,
+                                     const std::vector<int>& free_index, int spring_count)
+    : blocks_(spring_count) {
+  const int n = static_cast<int>(free_index.size());
+  row_offsets_.push_back(0);
+  for (int p = 0; p < n; ++p) {
+    const int row = free_index[p];
+    if (row < 0) continue;
+    const std::size_t first = entries_.size();
+    for (int e = adjacency.offsets[p]; e < adjacency.offsets[p + 1]; ++e) {
+      const int column = free_index[adjacency.other[e]];
+      if (column >= 0) entries_.push_back({column, adjacency.spring[e]});
+    }
+    // Columns in order: lower triangle first, and neighbours' x read in memory order.
+    std::sort(entries_.begin() + first, entries_.end(),
+              [](const Entry& a, const Entry& b) {
+                return a.column != b.column ? a.column < b.column : a.spring < b.spring;
+              });
+    const auto upper = std::find_if(entries_.begin() + first, entries_.end(),
+                                    [row](const Entry& e) { return e.column > row; });
+    upper_begin_.push_back(static_cast<int>(upper - entries_.begin()));
+    row_offsets_.push_back(static_cast<int>(entries_.size()));
+  }
+  diagonal_.resize(upper_begin_.size());
+  inverse_.resize(upper_begin_.size());
+}
+
+void SpringBlockMatrix::factorDiagonal(bool whole_blocks) {
+  const int n = rows();
+#pragma omp parallel for schedule(static) if (n >= kParallelRows)
+  for (int i = 0; i < n; ++i) {
+    // Whole blocks keep the coupling of a particle's x, y and z through its springs' directions
+    // (the s s^T terms) that the scalar diagonal drops; each block is SPD (mass plus PSD spring
+    // terms), so it inverts.
+    inverse_[i] = whole_blocks ? Mat3(diagonal_[i].inverse())
+                               : Mat3(diagonal_[i].diagonal().cwiseInverse().asDiagonal());
+  }
+}
+
+void SpringBlockMatrix::multiply(const Vector& in, Vector& out) const {
+  const int n = rows();
+  out.resize(in.size());
+  const double* x = in.data();
+#pragma omp parallel for schedule(static) if (n >= kParallelRows)
+  for (int i = 0; i < n; ++i) {
+    out.segment<3>(3 * i) = diagonal_[i] * in.segment<3>(3 * i) -
+                            neighbourSum(blocks_, entries_.data(), row_offsets_[i],
+                                         row_offsets_[i + 1], x);
+  }
+}
+
+void SpringBlockMatrix::applyDiagonalInverse(const Vector& r, Vector& z) const {
+  const int n = rows();
+  z.resize(r.size());
+#pragma omp parallel for schedule(static) if (n >= kParallelRows)
+  for (int i = 0; i < n; ++i) z.segment<3>(3 * i).noalias() = inverse_[i] * r.segment<3>(3 * i);
+}
+
+void SpringBlockMatrix::applySsor(const Vector& r, Vector& z, double w) const {
+  const int n = rows();
+  z.resize(r.size());
+  double* y = z.data();
+  // A_ij = -(alpha I + s s^T), so "minus sum A_ij y_j" adds the neighbour sums.
+  for (int i = 0; i < n; ++i) {
+    const Vec3 sum = r.segment<3>(3 * i) +
+                     neighbourSum(blocks_, entries_.data(), row_offsets_[i], upper_begin_[i], y);
+    z.segment<3>(3 * i) = w * (inverse_[i] * sum);
+  }
+  for (int i = n - 1; i >= 0; --i) {
+    const Vec3 sum =
+        neighbourSum(blocks_, entries_.data(), upper_begin_[i], row_offsets_[i + 1], y);
+    z.segment<3>(3 * i) += w * (inverse_[i] * sum);
+  }
+}
+
+}  // namespace mysim

@@ -1,4 +1,5 @@
 // Spring force terms alone: the analytic Jacobians against central finite differences.
+#include "mysim/model.h"
 #include "mysim/spring.h"
 
 #include <gtest/gtest.h>
@@ -84,6 +85,28 @@ TEST(SpringJacobian, ImplicitBlockEqualsHTimesDampingPlusHSquaredTimesDefiniteJa
     const Vec3 w(0.3, -0.2, 0.9);
     EXPECT_LT((b.timesJ(w) - J * w).norm(), 1e-12 * (J * w).norm()) << rest;
   }
+}
+
+}  // namespace
+}  // namespace mysim
+
+namespace mysim {
+namespace {
+
+TEST(SpringList, CopiesShareOneListUntilOneOfThemChanges) {
+  Model a;
+  a.springs = {{0, 1, 1.0, 10.0, 0.0, SpringFamily::Custom},
+               {1, 2, 1.0, 10.0, 0.0, SpringFamily::Custom}};
+  const Model b = a;
+  EXPECT_TRUE(b.springs.sharesWith(a.springs));
+  scaleStiffness(a, 2.0);
+  EXPECT_FALSE(b.springs.sharesWith(a.springs));
+  EXPECT_EQ(a.springs[1].stiffness, 20.0);
+  EXPECT_EQ(b.springs[1].stiffness, 10.0);  // the copy kept its own values
+  Model c = b;
+  c.springs.push_back({2, 3, 1.0, 5.0, 0.0, SpringFamily::Custom});
+  EXPECT_EQ(b.springs.size(), 2u);
+  EXPECT_EQ(c.springs.size(), 3u);
 }
 
 }  // namespace

@@ -126,7 +126,7 @@ std::string schemeOf(const std::string& engine, const std::string& scene_integra
 mysim::Model stressedModel(const mysim::Model& model, double stiffness, double mass_ratio) {
   mysim::Model m = model;
   if (stiffness > 0) {
-    for (mysim::Spring& s : m.springs) s.stiffness = stiffness;
+    for (mysim::Spring& s : m.springs.edit()) s.stiffness = stiffness;
   }
   if (mass_ratio != 1.0 && m.particleCount() > 1) {
     auto heavy = [&](int p) {

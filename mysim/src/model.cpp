@@ -37,7 +37,7 @@ Vec3 pinnedVelocity(const Model& model, double t) {
 }
 
 void scaleStiffness(Model& model, double scale) {
-  for (Spring& s : model.springs) s.stiffness *= scale;
+  for (Spring& s : model.springs.edit()) s.stiffness *= scale;
 }
 
 }  // namespace mysim

@@ -6,6 +6,7 @@
 #include "mysim/pin_motion.h"
 #include "mysim/sphere_collider.h"
 #include "mysim/spring.h"
+#include "mysim/spring_list.h"
 #include "mysim/types.h"
 #include "mysim/wind.h"
 
@@ -34,7 +35,7 @@ struct Model {
   std::vector<char> pinned;     // (N) 1 = pinned: follows pin_motion from its start position
   Vector start_position;        // (3N) m
   Vector start_velocity;        // (3N) m/s
-  std::vector<Spring> springs;  // flat list, any topology
+  SpringList springs;           // flat list, any topology; shared by copies of the model
   Vec3 gravity = Vec3::Zero();  // m/s^2
   double drag = 0.0;            // N s/m, viscous drag -drag * v on every particle
   std::optional<Wind> wind;

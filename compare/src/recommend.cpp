@@ -45,7 +45,8 @@ std::vector<Recommendation> recommend(const std::vector<SweepRow>& rows, double 
   }
   std::vector<Recommendation> out;
   for (const auto& key : order) {
-    Recommendation r{key.first, key.second, max_error, cost, {}, {}, 0, 0};
+    Recommendation r{
+        .scene = key.first, .stiffness_scale = key.second, .max_error = max_error, .cost = cost};
     std::vector<Choice> meeting;
     for (const Choice& c : groups[key]) {
       ++r.candidates;

@@ -7,6 +7,7 @@
 #include "mysim/integrator.h"
 #include "mysim/particle_system.h"
 #include "mysim/spring_block_matrix.h"
+#include "mysim/ssor_conjugate_gradient.h"
 
 namespace mysim {
 namespace {
@@ -46,19 +47,17 @@ class BackwardEuler final : public Integrator {
     }
     fillSprings(ps, x, v, h);
     fillRows(ps, h);
-    matrix_->factorDiagonal(preconditioner_ != CgPreconditioner::Jacobi);
-
     const SpringBlockMatrix& A = *matrix_;
-    const CgResult cg = conjugateGradient(
-        [&A](const Vector& in, Vector& out) { A.multiply(in, out); },
-        [this, &A](const Vector& r, Vector& z) {
-          if (preconditioner_ == CgPreconditioner::Ssor) {
-            A.applySsor(r, z, kSsorOmega);
-          } else {
-            A.applyDiagonalInverse(r, z);
-          }
-        },
-        rhs_, dv_free_, tolerance_, max_iterations_);
+    CgResult cg;
+    if (preconditioner_ == CgPreconditioner::Ssor) {
+      matrix_->prepareSsor(kSsorOmega);
+      cg = ssorConjugateGradient(A, rhs_, dv_free_, tolerance_, max_iterations_);
+    } else {
+      matrix_->factorDiagonal(preconditioner_ == CgPreconditioner::BlockJacobi);
+      cg = conjugateGradient([&A](const Vector& in, Vector& out) { A.multiply(in, out); },
+                             [&A](const Vector& r, Vector& z) { A.applyDiagonalInverse(r, z); },
+                             rhs_, dv_free_, tolerance_, max_iterations_);
+    }
     StepCounts counts{.accepted = 1, .derivative_evaluations = 1};
     counts.linear_iterations = cg.iterations;
     if (!cg.converged) counts.solver_failures = 1;

@@ -9,16 +9,28 @@ namespace {
 // Below this many rows one thread is faster (see particle_system.cpp).
 constexpr int kParallelRows = 512;
 
-// sum over entries [begin, end) of row's neighbours' (alpha x_j + s (s . x_j)).
+// One neighbour's alpha x_j + s (s . x_j), added to (sx, sy, sz).
+inline void addNeighbour(const SpringBlockMatrix::Block& b, const double* xj, double& sx,
+                         double& sy, double& sz) {
+  const double along = b.s.x() * xj[0] + b.s.y() * xj[1] + b.s.z() * xj[2];
+  sx += b.alpha * xj[0] + along * b.s.x();
+  sy += b.alpha * xj[1] + along * b.s.y();
+  sz += b.alpha * xj[2] + along * b.s.z();
+}
+
+// sum over entries [begin, end) of the row's neighbours' (alpha x_j + s (s . x_j)). Two partial
+// sums, even and odd entries, added at the end: one running sum made each entry wait for the
+// previous one's additions (measured: the product ran at the adder's latency).
 inline Vec3 neighbourSum(const std::vector<SpringBlockMatrix::Block>& blocks, const auto* entries,
                          int begin, int end, const double* x) {
-  Vec3 sum = Vec3::Zero();
-  for (int e = begin; e < end; ++e) {
-    const SpringBlockMatrix::Block& b = blocks[entries[e].spring];
-    const Eigen::Map<const Vec3> xj(x + 3 * entries[e].column);
-    sum += b.alpha * xj + b.s.dot(xj) * b.s;
+  double ax = 0, ay = 0, az = 0, bx = 0, by = 0, bz = 0;
+  int e = begin;
+  for (; e + 1 < end; e += 2) {
+    addNeighbour(blocks[entries[e].spring], x + 3 * entries[e].column, ax, ay, az);
+    addNeighbour(blocks[entries[e + 1].spring], x + 3 * entries[e + 1].column, bx, by, bz);
   }
-  return sum;
+  if (e < end) addNeighbour(blocks[entries[e].spring], x + 3 * entries[e].column, ax, ay, az);
+  return Vec3(ax + bx, ay + by, az + bz);
 }
 
 }  // namespace
@@ -37,10 +49,9 @@ SpringBlockMatrix::SpringBlockMatrix(const SpringAdjacency& adjacency,
       if (column >= 0) entries_.push_back({column, adjacency.spring[e]});
     }
     // Columns in order: lower triangle first, and neighbours' x read in memory order.
-    std::sort(entries_.begin() + first, entries_.end(),
-              [](const Entry& a, const Entry& b) {
-                return a.column != b.column ? a.column < b.column : a.spring < b.spring;
-              });
+    std::sort(entries_.begin() + first, entries_.end(), [](const Entry& a, const Entry& b) {
+      return a.column != b.column ? a.column < b.column : a.spring < b.spring;
+    });
     const auto upper = std::find_if(entries_.begin() + first, entries_.end(),
                                     [row](const Entry& e) { return e.column > row; });
     upper_begin_.push_back(static_cast<int>(upper - entries_.begin()));
@@ -68,9 +79,9 @@ void SpringBlockMatrix::multiply(const Vector& in, Vector& out) const {
   const double* x = in.data();
 #pragma omp parallel for schedule(static) if (n >= kParallelRows)
   for (int i = 0; i < n; ++i) {
-    out.segment<3>(3 * i) = diagonal_[i] * in.segment<3>(3 * i) -
-                            neighbourSum(blocks_, entries_.data(), row_offsets_[i],
-                                         row_offsets_[i + 1], x);
+    out.segment<3>(3 * i) =
+        diagonal_[i] * in.segment<3>(3 * i) -
+        neighbourSum(blocks_, entries_.data(), row_offsets_[i], row_offsets_[i + 1], x);
   }
 }
 
@@ -81,21 +92,59 @@ void SpringBlockMatrix::applyDiagonalInverse(const Vector& r, Vector& z) const {
   for (int i = 0; i < n; ++i) z.segment<3>(3 * i).noalias() = inverse_[i] * r.segment<3>(3 * i);
 }
 
-void SpringBlockMatrix::applySsor(const Vector& r, Vector& z, double w) const {
+void SpringBlockMatrix::prepareSsor(double w) {
+  factorDiagonal(true);
+  omega_ = w;
+}
+
+// A_ij = -N_ij, so "minus sum A_ij y_j" adds the neighbour sums.
+void SpringBlockMatrix::solveLower(const Vector& r, Vector& y) const {
   const int n = rows();
-  z.resize(r.size());
-  double* y = z.data();
-  // A_ij = -(alpha I + s s^T), so "minus sum A_ij y_j" adds the neighbour sums.
+  y.resize(r.size());
   for (int i = 0; i < n; ++i) {
-    const Vec3 sum = r.segment<3>(3 * i) +
-                     neighbourSum(blocks_, entries_.data(), row_offsets_[i], upper_begin_[i], y);
-    z.segment<3>(3 * i) = w * (inverse_[i] * sum);
+    const Vec3 sum = r.segment<3>(3 * i) + neighbourSum(blocks_, entries_.data(), row_offsets_[i],
+                                                        upper_begin_[i], y.data());
+    y.segment<3>(3 * i) = omega_ * (inverse_[i] * sum);
   }
+}
+
+void SpringBlockMatrix::solveUpper(const Vector& r, Vector& y) const {
+  const int n = rows();
+  y.resize(r.size());
   for (int i = n - 1; i >= 0; --i) {
-    const Vec3 sum =
-        neighbourSum(blocks_, entries_.data(), upper_begin_[i], row_offsets_[i + 1], y);
-    z.segment<3>(3 * i) += w * (inverse_[i] * sum);
+    const Vec3 sum = r.segment<3>(3 * i) + neighbourSum(blocks_, entries_.data(), upper_begin_[i],
+                                                        row_offsets_[i + 1], y.data());
+    y.segment<3>(3 * i) = omega_ * (inverse_[i] * sum);
   }
+}
+
+void SpringBlockMatrix::multiplyLower(const Vector& x, Vector& y) const {
+  const int n = rows();
+  y.resize(x.size());
+#pragma omp parallel for schedule(static) if (n >= kParallelRows)
+  for (int i = 0; i < n; ++i) {
+    y.segment<3>(3 * i) =
+        (diagonal_[i] * x.segment<3>(3 * i)) / omega_ -
+        neighbourSum(blocks_, entries_.data(), row_offsets_[i], upper_begin_[i], x.data());
+  }
+}
+
+void SpringBlockMatrix::multiplyUpper(const Vector& x, Vector& y) const {
+  const int n = rows();
+  y.resize(x.size());
+#pragma omp parallel for schedule(static) if (n >= kParallelRows)
+  for (int i = 0; i < n; ++i) {
+    y.segment<3>(3 * i) =
+        (diagonal_[i] * x.segment<3>(3 * i)) / omega_ -
+        neighbourSum(blocks_, entries_.data(), upper_begin_[i], row_offsets_[i + 1], x.data());
+  }
+}
+
+void SpringBlockMatrix::multiplyDiagonal(const Vector& x, Vector& y, double scale) const {
+  const int n = rows();
+  y.resize(x.size());
+#pragma omp parallel for schedule(static) if (n >= kParallelRows)
+  for (int i = 0; i < n; ++i) y.segment<3>(3 * i) = scale * (diagonal_[i] * x.segment<3>(3 * i));
 }
 
 }  // namespace mysim

@@ -31,18 +31,27 @@ class SpringBlockMatrix {
   std::vector<Block>& blocks() { return blocks_; }  // (S) filled by the integrator each step
   std::vector<Mat3>& diagonal() { return diagonal_; }
 
-  // After blocks and diagonal are filled: the inverses the preconditioners use.
+  // After blocks and diagonal are filled: the inverses of the diagonal blocks (or of their
+  // diagonals) for the Jacobi preconditioners.
   void factorDiagonal(bool whole_blocks);
+  // Or, for block SSOR with relaxation w: the block inverses and the sweeps' links (below).
+  void prepareSsor(double w);
+  double ssorOmega() const { return omega_; }
 
   // out = A in.
   void multiply(const Vector& in, Vector& out) const;
   // z = P^-1 r for P the (block) diagonal.
   void applyDiagonalInverse(const Vector& r, Vector& z) const;
-  // z = P^-1 r for symmetric successive over-relaxation with the 3x3 blocks,
-  // P = (D/w + L) (D/w)^-1 (D/w + U), L and U A's strict block triangles: a forward sweep
-  // y_i = w D_i^-1 (r_i - sum_{j<i} A_ij y_j), then backward z_i = y_i - w D_i^-1 sum_{j>i} A_ij z_j.
-  // Symmetric positive definite for 0 < w < 2, so CG applies. Sequential: the order is the rows'.
-  void applySsor(const Vector& r, Vector& z, double w) const;
+
+  // Block SSOR's factors, after prepareSsor(w): F = D/w + L and F^T = D/w + U, L and U the strict
+  // block triangles of A, so P = F (D/w)^-1 F^T is the SSOR preconditioner and
+  // A = F + F^T + (1 - 2/w) D (ssor_conjugate_gradient.h uses both). The solves are sequential
+  // sweeps in row order.
+  void solveLower(const Vector& r, Vector& y) const;                      // y = F^-1 r
+  void solveUpper(const Vector& r, Vector& y) const;                      // y = F^-T r
+  void multiplyLower(const Vector& x, Vector& y) const;                   // y = F x
+  void multiplyUpper(const Vector& x, Vector& y) const;                   // y = F^T x
+  void multiplyDiagonal(const Vector& x, Vector& y, double scale) const;  // y = scale D x
 
  private:
   struct Entry {
@@ -55,6 +64,7 @@ class SpringBlockMatrix {
   std::vector<Block> blocks_;     // (S)
   std::vector<Mat3> diagonal_;    // (F)
   std::vector<Mat3> inverse_;     // (F) inverse of each diagonal block (or of its diagonal)
+  double omega_ = 1.0;
 };
 
 }  // namespace mysim

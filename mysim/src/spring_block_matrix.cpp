@@ -18,19 +18,14 @@ inline void addNeighbour(const SpringBlockMatrix::Block& b, const double* xj, do
   sz += b.alpha * xj[2] + along * b.s.z();
 }
 
-// sum over entries [begin, end) of the row's neighbours' (alpha x_j + s (s . x_j)). Two partial
-// sums, even and odd entries, added at the end: one running sum made each entry wait for the
-// previous one's additions (measured: the product ran at the adder's latency).
+// sum over entries [begin, end) of the row's neighbours' (alpha x_j + s (s . x_j)).
 inline Vec3 neighbourSum(const std::vector<SpringBlockMatrix::Block>& blocks, const auto* entries,
                          int begin, int end, const double* x) {
-  double ax = 0, ay = 0, az = 0, bx = 0, by = 0, bz = 0;
-  int e = begin;
-  for (; e + 1 < end; e += 2) {
-    addNeighbour(blocks[entries[e].spring], x + 3 * entries[e].column, ax, ay, az);
-    addNeighbour(blocks[entries[e + 1].spring], x + 3 * entries[e + 1].column, bx, by, bz);
+  double sx = 0, sy = 0, sz = 0;
+  for (int e = begin; e < end; ++e) {
+    addNeighbour(blocks[entries[e].spring], x + 3 * entries[e].column, sx, sy, sz);
   }
-  if (e < end) addNeighbour(blocks[entries[e].spring], x + 3 * entries[e].column, ax, ay, az);
-  return Vec3(ax + bx, ay + by, az + bz);
+  return Vec3(sx, sy, sz);
 }
 
 }  // namespace

@@ -173,13 +173,17 @@ TEST(SsorConjugateGradient, TakesTheStepsOfCgWithTheAssembledSsorPreconditioner)
   }
 }
 
-// A hanging, damped 16 x 16 cloth after 0.1 s of falling, then steps of 1/60 s.
+constexpr double kLargeStep = 1.0 / 60;    // h^2 k/m = 14
+constexpr double kSmallStep = 1.0 / 2000;  // h^2 k/m = 0.013
+
+// A hanging, damped 16 x 16 cloth (h^2 k/m = 14 at h = 1/60 s for its structural springs),
+// 6 steps of h.
 struct StepResult {
   Vector y;
   long iterations = 0;
 };
 
-StepResult largeSteps(CgPreconditioner preconditioner) {
+StepResult steps(CgPreconditioner preconditioner, double h) {
   ClothShape shape;
   shape.rows = shape.cols = 16;
   shape.hanging = true;
@@ -201,7 +205,7 @@ StepResult largeSteps(CgPreconditioner preconditioner) {
   State state = system.initialState();
   StepResult result;
   for (int k = 0; k < 6; ++k) {
-    const StepCounts counts = integrator->step(system, state, 1.0 / 60);
+    const StepCounts counts = integrator->step(system, state, h);
     EXPECT_EQ(counts.solver_failures, 0) << preconditionerName(preconditioner) << " step " << k;
     result.iterations += counts.linear_iterations;
   }
@@ -210,9 +214,9 @@ StepResult largeSteps(CgPreconditioner preconditioner) {
 }
 
 TEST(BackwardEulerPreconditioners, AllReachTheSameStepsAndSsorTakesTheFewestIterations) {
-  const StepResult ssor = largeSteps(CgPreconditioner::Ssor);
-  const StepResult block = largeSteps(CgPreconditioner::BlockJacobi);
-  const StepResult jacobi = largeSteps(CgPreconditioner::Jacobi);
+  const StepResult ssor = steps(CgPreconditioner::Ssor, kLargeStep);
+  const StepResult block = steps(CgPreconditioner::BlockJacobi, kLargeStep);
+  const StepResult jacobi = steps(CgPreconditioner::Jacobi, kLargeStep);
   // Each solve stops at a relative residual of 1e-10, so the states agree far below the metre.
   EXPECT_LT((ssor.y - block.y).cwiseAbs().maxCoeff(), 1e-7);
   EXPECT_LT((ssor.y - jacobi.y).cwiseAbs().maxCoeff(), 1e-7);
@@ -222,6 +226,18 @@ TEST(BackwardEulerPreconditioners, AllReachTheSameStepsAndSsorTakesTheFewestIter
   // hold it to.
   EXPECT_LT(2 * ssor.iterations, block.iterations);
   EXPECT_LT(2 * ssor.iterations, jacobi.iterations);
+}
+
+TEST(BackwardEulerPreconditioners, AutoTakesSsorForLargeStepsAndBlockJacobiForSmallOnes) {
+  const StepResult auto_large = steps(CgPreconditioner::Auto, kLargeStep);
+  const StepResult ssor_large = steps(CgPreconditioner::Ssor, kLargeStep);
+  EXPECT_EQ(auto_large.y, ssor_large.y);
+  EXPECT_EQ(auto_large.iterations, ssor_large.iterations);
+  const StepResult auto_small = steps(CgPreconditioner::Auto, kSmallStep);
+  const StepResult block_small = steps(CgPreconditioner::BlockJacobi, kSmallStep);
+  const StepResult ssor_small = steps(CgPreconditioner::Ssor, kSmallStep);
+  EXPECT_EQ(auto_small.y, block_small.y);
+  EXPECT_NE(auto_small.y, ssor_small.y);  // so the comparison above can tell them apart
 }
 
 }  // namespace

@@ -149,7 +149,7 @@ INSTANTIATE_TEST_SUITE_P(
                   return with(validCloth(), "/integrator/cg_preconditioner"_json_pointer,
                               "multigrid");
                 },
-                "integrator.cg_preconditioner", "jacobi, block-jacobi, ssor"},
+                "integrator.cg_preconditioner", "auto, jacobi, block-jacobi, ssor"},
         BadCase{"SecondOrderIntegratorOnCircle",
                 [] {
                   return json::parse(R"({"system": {"type": "circle"},

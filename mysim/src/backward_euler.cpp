@@ -49,11 +49,11 @@ class BackwardEuler final : public Integrator {
     fillRows(ps, h);
     const SpringBlockMatrix& A = *matrix_;
     CgResult cg;
-    if (preconditioner_ == CgPreconditioner::Ssor) {
+    if (preconditionerFor(h) == CgPreconditioner::Ssor) {
       matrix_->prepareSsor(kSsorOmega);
       cg = ssorConjugateGradient(A, rhs_, dv_free_, tolerance_, max_iterations_);
     } else {
-      matrix_->factorDiagonal(preconditioner_ == CgPreconditioner::BlockJacobi);
+      matrix_->factorDiagonal(preconditionerFor(h) == CgPreconditioner::BlockJacobi);
       cg = conjugateGradient([&A](const Vector& in, Vector& out) { A.multiply(in, out); },
                              [&A](const Vector& r, Vector& z) { A.applyDiagonalInverse(r, z); },
                              rhs_, dv_free_, tolerance_, max_iterations_);
@@ -79,6 +79,13 @@ class BackwardEuler final : public Integrator {
   // (docs/performance.md).
   static constexpr double kSsorOmega = 1.5;
 
+  // Auto: SSOR where h^2 k/m of the stiffest spring on a free particle exceeds 1 (integrator.h).
+  CgPreconditioner preconditionerFor(double h) const {
+    if (preconditioner_ != CgPreconditioner::Auto) return preconditioner_;
+    return h * h * stiffest_k_over_m_ > 1.0 ? CgPreconditioner::Ssor
+                                            : CgPreconditioner::BlockJacobi;
+  }
+
   void numberFreeParticles(const ParticleSystem& ps) {
     const int n = ps.particleCount();
     free_index_.assign(n, -1);
@@ -89,7 +96,16 @@ class BackwardEuler final : public Integrator {
         free_particles_.push_back(p);
       }
     }
-    const int springs = static_cast<int>(ps.model().springs.size());
+    const Model& model = ps.model();
+    stiffest_k_over_m_ = 0.0;
+    for (const Spring& sp : model.springs) {
+      for (int end : {sp.i, sp.j}) {
+        if (!model.pinned[end]) {
+          stiffest_k_over_m_ = std::max(stiffest_k_over_m_, sp.stiffness / model.mass[end]);
+        }
+      }
+    }
+    const int springs = static_cast<int>(model.springs.size());
     matrix_.emplace(ps.adjacency(), free_index_, springs);
     stiffness_term_.resize(springs);
     const int unknowns = 3 * static_cast<int>(free_particles_.size());
@@ -164,6 +180,7 @@ class BackwardEuler final : public Integrator {
   double tolerance_;
   int max_iterations_;
   CgPreconditioner preconditioner_;
+  double stiffest_k_over_m_ = 0.0;  // max k / m over springs and their free ends, 1/s^2
 };
 
 }  // namespace

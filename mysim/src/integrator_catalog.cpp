@@ -35,6 +35,7 @@ const std::vector<IntegratorInfo>& integratorCatalog() {
 
 const char* preconditionerName(CgPreconditioner preconditioner) {
   switch (preconditioner) {
+    case CgPreconditioner::Auto: return "auto";
     case CgPreconditioner::Jacobi: return "jacobi";
     case CgPreconditioner::BlockJacobi: return "block-jacobi";
     case CgPreconditioner::Ssor: return "ssor";
@@ -43,12 +44,12 @@ const char* preconditionerName(CgPreconditioner preconditioner) {
 }
 
 std::expected<CgPreconditioner, std::string> preconditionerByName(std::string_view name) {
-  for (CgPreconditioner p :
-       {CgPreconditioner::Jacobi, CgPreconditioner::BlockJacobi, CgPreconditioner::Ssor}) {
+  for (CgPreconditioner p : {CgPreconditioner::Auto, CgPreconditioner::Jacobi,
+                             CgPreconditioner::BlockJacobi, CgPreconditioner::Ssor}) {
     if (name == preconditionerName(p)) return p;
   }
   return std::unexpected("unknown CG preconditioner '" + clip(std::string(name), 40) +
-                         "'; expected one of jacobi, block-jacobi, ssor");
+                         "'; expected one of auto, jacobi, block-jacobi, ssor");
 }
 
 const IntegratorInfo* findIntegrator(std::string_view name) {

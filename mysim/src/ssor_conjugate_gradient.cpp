@@ -18,25 +18,22 @@ CgResult ssorConjugateGradient(const SpringBlockMatrix& A, const Vector& b, Vect
   // The floor of conjugateGradient(), for the same reason (a system decaying to subnormals).
   const double threshold = std::max(tolerance * b_norm, 1e-150);
   const double k_scale = 1.0 - 2.0 / w;  // K = k_scale D
-  auto trueResidualMet = [&](const Vector& r_hat, Vector& r) {
-    A.multiplyLower(r_hat, r);
-    return std::sqrt(deterministicDot(r, r)) <= threshold;
-  };
 
-  // Transformed system: b^ = F^-1 b, x^ = F^T x, and its residual r^ = b^ - F^-1 A F^-T x^,
-  // where F^-T x^ is x itself.
-  Vector b_hat, x_hat, r_hat, r, z, p, t, q, ap;
-  A.solveLower(b, b_hat);
-  A.multiplyUpper(x, x_hat);
-  A.multiplyDiagonal(x, t, k_scale);
-  t += x_hat;
-  A.solveLower(t, q);
-  r_hat = b_hat - x - q;
-  if (trueResidualMet(r_hat, r)) {
+  // The start's true residual r = b - A x (a parallel product), then the transformed system:
+  // r^ = F^-1 r (one sweep) and x^ = F^T x (half a product; F^-T x^ is x itself).
+  Vector r, x_hat, r_hat, z, p, t, q, ap;
+  A.multiply(x, r);
+  r = b - r;
+  const double r_norm = std::sqrt(deterministicDot(r, r));
+  if (r_norm <= threshold) {
     result.converged = true;
     return result;
   }
-  const double b_hat_norm = std::sqrt(deterministicDot(b_hat, b_hat));
+  A.solveLower(r, r_hat);
+  A.multiplyUpper(x, x_hat);
+  // The true residual, F r^, costs half a product: it is checked from the iteration where r^
+  // has shrunk by the factor the true residual must, and at every one after.
+  const double trigger = std::sqrt(deterministicDot(r_hat, r_hat)) * (threshold / r_norm);
   bool check_true_residual = false;
 
   A.multiplyDiagonal(r_hat, z, 1.0 / w);
@@ -54,10 +51,10 @@ CgResult ssorConjugateGradient(const SpringBlockMatrix& A, const Vector& b, Vect
     x_hat += alpha * p;
     r_hat -= alpha * ap;
     result.iterations = k;
-    if (check_true_residual ||
-        std::sqrt(deterministicDot(r_hat, r_hat)) <= tolerance * b_hat_norm) {
+    if (check_true_residual || std::sqrt(deterministicDot(r_hat, r_hat)) <= trigger) {
       check_true_residual = true;
-      if (trueResidualMet(r_hat, r)) {
+      A.multiplyLower(r_hat, r);
+      if (std::sqrt(deterministicDot(r, r)) <= threshold) {
         result.converged = true;
         break;
       }

@@ -14,8 +14,9 @@ namespace mysim {
 // the two sweeps of applying P^-1.
 //
 // Stops, as conjugateGradient() does, when |b - A x| <= tolerance |b|. The true residual is
-// F times the transformed one, half a product: it is computed once the transformed residual
-// meets the same relative bound, and at every iteration after. Starts from the guess in x.
+// F times the transformed one, half a product: it is computed once the transformed residual has
+// shrunk from its start by the factor the true one must, and at every iteration after. Starts
+// from the guess in x.
 // Sequential sweeps: the result does not depend on the number of threads.
 // A: after A.prepareSsor(w).
 CgResult ssorConjugateGradient(const SpringBlockMatrix& A, const Vector& b, Vector& x,

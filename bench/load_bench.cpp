@@ -18,8 +18,8 @@ class BusyProcess {
  public:
   BusyProcess() : pid_(fork()) {
     if (pid_ == 0) {
-      for (volatile unsigned long spin = 0;; spin = spin + 1) {
-      }
+      volatile unsigned long spin = 0;
+      for (;;) spin = spin + 1;  // volatile: the loop is not optimised away
     }
     usleep(200'000);  // let the scheduler see it before the run starts
   }

@@ -45,8 +45,11 @@ std::vector<Recommendation> recommend(const std::vector<SweepRow>& rows, double 
   }
   std::vector<Recommendation> out;
   for (const auto& key : order) {
-    Recommendation r{
-        .scene = key.first, .stiffness_scale = key.second, .max_error = max_error, .cost = cost};
+    Recommendation r;
+    r.scene = key.first;
+    r.stiffness_scale = key.second;
+    r.max_error = max_error;
+    r.cost = cost;
     std::vector<Choice> meeting;
     for (const Choice& c : groups[key]) {
       ++r.candidates;

@@ -74,16 +74,18 @@ class BackwardEuler final : public Integrator {
   }
 
  private:
-  // SSOR's relaxation factor: measured on the hanging cloth at h = 1/60 s, iterations fall from
-  // w = 1 (symmetric Gauss-Seidel) to a flat minimum near 1.5 and rise again towards 2
-  // (docs/performance.md).
+  // SSOR's relaxation factor, measured on the hanging cloth at h = 1/60 s: iterations fall from
+  // w = 1 (symmetric Gauss-Seidel) to their fewest between 1.4 and 1.7 at 128 x 128, where 1.7
+  // is already worse at 32 x 32 (docs/performance.md).
   static constexpr double kSsorOmega = 1.5;
 
-  // Auto: SSOR where h^2 k/m of the stiffest spring on a free particle exceeds 1 (integrator.h).
+  // Auto: SSOR where the springs' blocks outweigh the masses, (h c + h^2 k)/m > 1 for the
+  // stiffest and most damped springs on a free particle (integrator.h).
   CgPreconditioner preconditionerFor(double h) const {
     if (preconditioner_ != CgPreconditioner::Auto) return preconditioner_;
-    return h * h * stiffest_k_over_m_ > 1.0 ? CgPreconditioner::Ssor
-                                            : CgPreconditioner::BlockJacobi;
+    return h * most_damping_over_m_ + h * h * stiffest_k_over_m_ > 1.0
+               ? CgPreconditioner::Ssor
+               : CgPreconditioner::BlockJacobi;
   }
 
   void numberFreeParticles(const ParticleSystem& ps) {
@@ -97,12 +99,12 @@ class BackwardEuler final : public Integrator {
       }
     }
     const Model& model = ps.model();
-    stiffest_k_over_m_ = 0.0;
+    stiffest_k_over_m_ = most_damping_over_m_ = 0.0;
     for (const Spring& sp : model.springs) {
       for (int end : {sp.i, sp.j}) {
-        if (!model.pinned[end]) {
-          stiffest_k_over_m_ = std::max(stiffest_k_over_m_, sp.stiffness / model.mass[end]);
-        }
+        if (model.pinned[end]) continue;
+        stiffest_k_over_m_ = std::max(stiffest_k_over_m_, sp.stiffness / model.mass[end]);
+        most_damping_over_m_ = std::max(most_damping_over_m_, sp.damping / model.mass[end]);
       }
     }
     const int springs = static_cast<int>(model.springs.size());
@@ -180,7 +182,8 @@ class BackwardEuler final : public Integrator {
   double tolerance_;
   int max_iterations_;
   CgPreconditioner preconditioner_;
-  double stiffest_k_over_m_ = 0.0;  // max k / m over springs and their free ends, 1/s^2
+  double stiffest_k_over_m_ = 0.0;    // max k / m over springs and their free ends, 1/s^2
+  double most_damping_over_m_ = 0.0;  // max c / m over the same, 1/s
 };
 
 }  // namespace

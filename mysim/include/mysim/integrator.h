@@ -27,10 +27,10 @@ struct StepCounts {
 // Backward Euler's CG preconditioner (docs/performance.md measures each): symmetric
 // successive over-relaxation with the 3x3 blocks (fewest iterations, but its sweeps run on one
 // core), the inverses of the 3x3 diagonal blocks, or the plain diagonal. Auto, the default, takes
-// SSOR where the springs dominate the masses (h^2 k/m > 1 for the stiffest spring on a free
-// particle: large steps, where CG needs tens of iterations) and block Jacobi below, where a few
-// parallel iterations cost less than SSOR's serial sweeps (measured crossing near 1 on 32 x 32
-// and 64 x 64 cloths, 1 and 2 threads).
+// SSOR where the springs dominate the masses ((h c + h^2 k)/m > 1 for the most damped and the
+// stiffest springs on a free particle: large steps, where CG needs tens of iterations) and block
+// Jacobi below, where a few parallel iterations cost less than SSOR's serial sweeps (measured
+// crossing near h^2 k/m = 1 on 32 x 32 and 64 x 64 cloths, 1 and 2 threads).
 enum class CgPreconditioner { Auto, Jacobi, BlockJacobi, Ssor };
 const char* preconditionerName(CgPreconditioner preconditioner);
 // By name ("auto", "jacobi", "block-jacobi", "ssor"), or an error listing them.

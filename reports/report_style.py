@@ -135,8 +135,10 @@ class Page:
         self.key, self.title, self.caption, self.draw = key, title, caption, draw
 
 
-def plot_area(fig, rows=1, cols=1, right=None, top=None, **kw):
-    """A grid of axes inside the page's plot rectangle (`right`, `top`: leave room for a legend)."""
-    left, bottom, default_right, default_top = PLOT_RECT
-    return fig.add_gridspec(rows, cols, left=left, bottom=bottom, right=right or default_right,
+def plot_area(fig, rows=1, cols=1, right=None, top=None, left=None, **kw):
+    """A grid of axes inside the page's plot rectangle (`right`, `top`: leave room for a legend;
+    `left`: for long tick labels)."""
+    default_left, bottom, default_right, default_top = PLOT_RECT
+    return fig.add_gridspec(rows, cols, left=left or default_left, bottom=bottom,
+                            right=right or default_right,
                             top=top or default_top, **kw)

@@ -126,8 +126,9 @@ class BackwardEuler final : public Integrator {
     for (int k = 0; k < count; ++k) {
       const Spring& sp = springs[k];
       const Vec3 d = x.segment<3>(3 * sp.j) - x.segment<3>(3 * sp.i);
-      const Vec3 u = d / d.norm();
-      const double clamp = std::max(0.0, 1.0 - sp.rest_length / d.norm());
+      const double l = d.norm();
+      const Vec3 u = d / l;
+      const double clamp = std::max(0.0, 1.0 - sp.rest_length / l);
       const double alpha = h * h * sp.stiffness * clamp;
       const double beta = h * sp.damping + h * h * sp.stiffness * (1.0 - clamp);  // >= 0
       blocks[k] = {alpha, std::sqrt(beta) * u};

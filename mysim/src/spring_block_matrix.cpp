@@ -68,16 +68,48 @@ void SpringBlockMatrix::factorDiagonal(bool whole_blocks) {
   }
 }
 
-void SpringBlockMatrix::multiply(const Vector& in, Vector& out) const {
+std::pair<int, int> SpringBlockMatrix::entries(int row, Part part) const {
+  switch (part) {
+    case Part::Lower:
+      return {row_offsets_[row], upper_begin_[row]};
+    case Part::Upper:
+      return {upper_begin_[row], row_offsets_[row + 1]};
+    case Part::Both:
+      break;
+  }
+  return {row_offsets_[row], row_offsets_[row + 1]};
+}
+
+Vec3 SpringBlockMatrix::neighbours(int row, Part part, const double* x) const {
+  const auto [begin, end] = entries(row, part);
+  return neighbourSum(blocks_, entries_.data(), begin, end, x);
+}
+
+void SpringBlockMatrix::multiplyPart(const Vector& x, Vector& y, double diagonal_scale,
+                                     Part part) const {
   const int n = rows();
-  out.resize(in.size());
-  const double* x = in.data();
+  y.resize(x.size());
 #pragma omp parallel for schedule(static) if (n >= kParallelRows)
   for (int i = 0; i < n; ++i) {
-    out.segment<3>(3 * i) =
-        diagonal_[i] * in.segment<3>(3 * i) -
-        neighbourSum(blocks_, entries_.data(), row_offsets_[i], row_offsets_[i + 1], x);
+    y.segment<3>(3 * i) =
+        (diagonal_[i] * x.segment<3>(3 * i)) * diagonal_scale - neighbours(i, part, x.data());
   }
+}
+
+// A_ij = -N_ij, so "minus sum A_ij y_j" adds the neighbour sums. Lower: rows in order, each
+// reading the rows before it; upper: in reverse.
+void SpringBlockMatrix::sweep(const Vector& r, Vector& y, Part part) const {
+  const int n = rows();
+  y.resize(r.size());
+  for (int k = 0; k < n; ++k) {
+    const int i = part == Part::Lower ? k : n - 1 - k;
+    const Vec3 sum = r.segment<3>(3 * i) + neighbours(i, part, y.data());
+    y.segment<3>(3 * i) = omega_ * (inverse_[i] * sum);
+  }
+}
+
+void SpringBlockMatrix::multiply(const Vector& in, Vector& out) const {
+  multiplyPart(in, out, 1.0, Part::Both);
 }
 
 void SpringBlockMatrix::applyDiagonalInverse(const Vector& r, Vector& z) const {
@@ -92,47 +124,13 @@ void SpringBlockMatrix::prepareSsor(double w) {
   omega_ = w;
 }
 
-// A_ij = -N_ij, so "minus sum A_ij y_j" adds the neighbour sums.
-void SpringBlockMatrix::solveLower(const Vector& r, Vector& y) const {
-  const int n = rows();
-  y.resize(r.size());
-  for (int i = 0; i < n; ++i) {
-    const Vec3 sum = r.segment<3>(3 * i) + neighbourSum(blocks_, entries_.data(), row_offsets_[i],
-                                                        upper_begin_[i], y.data());
-    y.segment<3>(3 * i) = omega_ * (inverse_[i] * sum);
-  }
-}
-
-void SpringBlockMatrix::solveUpper(const Vector& r, Vector& y) const {
-  const int n = rows();
-  y.resize(r.size());
-  for (int i = n - 1; i >= 0; --i) {
-    const Vec3 sum = r.segment<3>(3 * i) + neighbourSum(blocks_, entries_.data(), upper_begin_[i],
-                                                        row_offsets_[i + 1], y.data());
-    y.segment<3>(3 * i) = omega_ * (inverse_[i] * sum);
-  }
-}
-
+void SpringBlockMatrix::solveLower(const Vector& r, Vector& y) const { sweep(r, y, Part::Lower); }
+void SpringBlockMatrix::solveUpper(const Vector& r, Vector& y) const { sweep(r, y, Part::Upper); }
 void SpringBlockMatrix::multiplyLower(const Vector& x, Vector& y) const {
-  const int n = rows();
-  y.resize(x.size());
-#pragma omp parallel for schedule(static) if (n >= kParallelRows)
-  for (int i = 0; i < n; ++i) {
-    y.segment<3>(3 * i) =
-        (diagonal_[i] * x.segment<3>(3 * i)) / omega_ -
-        neighbourSum(blocks_, entries_.data(), row_offsets_[i], upper_begin_[i], x.data());
-  }
+  multiplyPart(x, y, 1.0 / omega_, Part::Lower);
 }
-
 void SpringBlockMatrix::multiplyUpper(const Vector& x, Vector& y) const {
-  const int n = rows();
-  y.resize(x.size());
-#pragma omp parallel for schedule(static) if (n >= kParallelRows)
-  for (int i = 0; i < n; ++i) {
-    y.segment<3>(3 * i) =
-        (diagonal_[i] * x.segment<3>(3 * i)) / omega_ -
-        neighbourSum(blocks_, entries_.data(), upper_begin_[i], row_offsets_[i + 1], x.data());
-  }
+  multiplyPart(x, y, 1.0 / omega_, Part::Upper);
 }
 
 void SpringBlockMatrix::multiplyDiagonal(const Vector& x, Vector& y, double scale) const {

@@ -1,4 +1,5 @@
 #pragma once
+#include <utility>
 #include <vector>
 
 #include "mysim/spring_adjacency.h"
@@ -54,6 +55,12 @@ class SpringBlockMatrix {
   void multiplyDiagonal(const Vector& x, Vector& y, double scale) const;  // y = scale D x
 
  private:
+  enum class Part { Both, Lower, Upper };  // a row's neighbours: all, columns below, above
+  std::pair<int, int> entries(int row, Part part) const;       // [begin, end) into entries_
+  Vec3 neighbours(int row, Part part, const double* x) const;  // sum of N_ij x_j over the part
+  void multiplyPart(const Vector& x, Vector& y, double diagonal_scale, Part part) const;
+  void sweep(const Vector& r, Vector& y, Part part) const;  // y = F^-1 r or F^-T r
+
   struct Entry {
     int column;
     int spring;

@@ -48,7 +48,8 @@ void clothRun(benchmark::State& state, int threads, bool follow_load, bool loade
   int used = 0;
   for (auto _ : state) {
     mysim::ParticleSystem system(model, scene.limits);
-    auto stepper = mysim::IntegratorStepper(system, mysim::makeIntegrator(scene.integrator).value());
+    auto stepper =
+        mysim::IntegratorStepper(system, mysim::makeIntegrator(scene.integrator).value());
     const mysim::RunRecord r = mysim::simulate(system, stepper, system.initialState(), settings);
     state.SetIterationTime(r.wall_seconds);
     used = r.threads;
@@ -62,14 +63,13 @@ void registerAll() {
     int threads;
     bool follow_load, loaded;
   };
-  for (const Case& c : {Case{"idle_one_thread", 1, false, false},
-                        Case{"idle_all_threads", 0, true, false},
-                        Case{"loaded_follow_load", 0, true, true},
-                        Case{"loaded_fixed_all_threads", 0, false, true}}) {
-    benchmark::RegisterBenchmark((std::string("BM_ClothRk4UnderLoad/64/") + c.name).c_str(),
-                                 [c](benchmark::State& st) {
-                                   clothRun(st, c.threads, c.follow_load, c.loaded);
-                                 })
+  for (const Case& c :
+       {Case{"idle_one_thread", 1, false, false}, Case{"idle_all_threads", 0, true, false},
+        Case{"loaded_follow_load", 0, true, true},
+        Case{"loaded_fixed_all_threads", 0, false, true}}) {
+    benchmark::RegisterBenchmark(
+        (std::string("BM_ClothRk4UnderLoad/64/") + c.name).c_str(),
+        [c](benchmark::State& st) { clothRun(st, c.threads, c.follow_load, c.loaded); })
         ->Unit(benchmark::kMillisecond)
         ->UseManualTime()
         ->Iterations(3);

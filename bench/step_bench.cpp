@@ -5,8 +5,8 @@
 #include <omp.h>
 
 #include "bench_scenes.h"
+#include "compare/engines/engine_registry.h"
 #include "mysim/particle_system.h"
-#include "compare/engine_registry.h"
 
 namespace {
 
@@ -56,7 +56,7 @@ void engineBenchmark(benchmark::State& state, const springcheck::EngineRegistry&
   state.counters["particles"] = model.particleCount();
   state.counters["ns_per_particle"] =
       benchmark::Counter(model.particleCount(), benchmark::Counter::kIsIterationInvariantRate |
-                                                     benchmark::Counter::kInvert);
+                                                    benchmark::Counter::kInvert);
   state.counters["dt"] = h;
 }
 

@@ -4,7 +4,7 @@
 #   share/man/man1/springcheck.1, share/bash-completion/completions/springcheck
 #   lib/libspringcheck_*.a, include/{mysim,reference,compare}/
 #   lib/cmake/springcheck/springcheckConfig.cmake (+ version and targets files)
-# The executable finds its data at ../share/springcheck from its own folder (compare/src/
+# The executable finds its data at ../share/springcheck from its own folder (cli/src/
 # data_dir.h); the build tree gets the same layout, as links into the source tree, so the built
 # binary behaves exactly like the installed one.
 include(CMakePackageConfigHelpers)
@@ -16,7 +16,7 @@ set(SPRINGCHECK_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/springcheck)
 set(SPRINGCHECK_DATA_DIRS scenes reports examples compare/sweeps)
 set(SPRINGCHECK_DATA_FILES compare/tolerances.json)
 
-# The build tree's share/springcheck, beside build/<preset>/compare/springcheck.
+# The build tree's share/springcheck, beside build/<preset>/cli/springcheck.
 set(_build_data ${PROJECT_BINARY_DIR}/share/springcheck)
 file(MAKE_DIRECTORY ${_build_data}/compare)
 foreach(_item IN LISTS SPRINGCHECK_DATA_DIRS SPRINGCHECK_DATA_FILES)
@@ -35,17 +35,18 @@ foreach(_file IN LISTS SPRINGCHECK_DATA_FILES)
   install(FILES ${PROJECT_SOURCE_DIR}/${_file} DESTINATION ${SPRINGCHECK_INSTALL_DATADIR}/${_parent})
 endforeach()
 if(TARGET springcheck_man)
-  install(FILES ${PROJECT_BINARY_DIR}/compare/springcheck.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
+  install(FILES ${PROJECT_BINARY_DIR}/cli/springcheck.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
 endif()
-install(FILES ${PROJECT_BINARY_DIR}/compare/springcheck.bash
+install(FILES ${PROJECT_BINARY_DIR}/cli/springcheck.bash
         DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions RENAME springcheck)
 
 # The libraries, their headers and the package config.
-install(TARGETS mysim reference springcheck_compare EXPORT springcheckTargets
+install(TARGETS mysim reference springcheck_compare springcheck_compare_metrics springcheck_compare_io
+                springcheck_compare_engines springcheck_compare_studies EXPORT springcheckTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-foreach(_layer mysim reference compare)
-  install(DIRECTORY ${PROJECT_SOURCE_DIR}/${_layer}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+foreach(_include mysim reference compare/metrics compare/io compare/engines compare/studies)
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/${_include}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endforeach()
 install(EXPORT springcheckTargets NAMESPACE springcheck:: DESTINATION ${SPRINGCHECK_INSTALL_CMAKEDIR})
 configure_package_config_file(cmake/springcheckConfig.cmake.in

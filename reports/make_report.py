@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Draws the springcheck report (report.pdf and one PNG per page) from a manifest.
 
-`springcheck report` writes the manifest (compare/include/compare/report_manifest.h): which result
+`springcheck report` writes the manifest (compare/io/include/compare/io/report_manifest.h): which result
 tables exist, the scenes and engines in them, and for each missing input the command that makes
 it. This script reads only what the manifest names and only draws: every number comes from the
 C++ side. A missing input is a page naming its command, never a traceback.

@@ -12,10 +12,10 @@ OUT=${SPRINGCHECK_OUT:-out}/bench
 mkdir -p "$OUT"
 build/release/bench/springcheck_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true \
   --benchmark_min_time=0.5 --benchmark_out="$OUT/bench.json" --benchmark_out_format=json
-build/release/compare/springcheck run bench/cloth256_rk4.json --out "$OUT/memory" >/dev/null
-build/release/compare/springcheck run scenes/seed/circle.json --out "$OUT/memory_baseline" >/dev/null
+build/release/cli/springcheck run bench/cloth256_rk4.json --out "$OUT/memory" >/dev/null
+build/release/cli/springcheck run scenes/seed/circle.json --out "$OUT/memory_baseline" >/dev/null
 for scene in cloth_hanging cloth_on_sphere; do
-  build/release/compare/springcheck recommend "scenes/matched/$scene.json" --max-error 1e-3 --repeats 3 \
+  build/release/cli/springcheck recommend "scenes/matched/$scene.json" --max-error 1e-3 --repeats 3 \
     --table "$OUT/equal_accuracy_$scene.csv" --json "$OUT/equal_accuracy_$scene.json" >/dev/null || [ $? -eq 1 ]
 done
 python3 bench/summarize.py "$OUT/bench.json" "$OUT/memory/summary.json" \

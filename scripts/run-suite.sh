@@ -12,7 +12,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh default springcheck
-B=build/release/compare/springcheck
+B=build/release/cli/springcheck
 OUT=${SPRINGCHECK_OUT:-out}
 start=$(date +%s)
 

@@ -2,8 +2,8 @@
 // climbs above its lowest earlier value has gone unstable even if it never explodes.
 #include <gtest/gtest.h>
 
-#include "compare/engine_registry.h"
-#include "compare/stability.h"
+#include "compare/engines/engine_registry.h"
+#include "compare/studies/stability.h"
 #include "mysim/particle_system.h"
 
 namespace springcheck {
@@ -79,8 +79,8 @@ TEST(BoundedInstability, EveryStepTheSearchCallsStableEndsAtTheConvergedEnergy) 
   const mysim::Scene scene = dampedCloth();
   SceneStabilitySettings settings;
   settings.duration = scene.duration;
-  const StabilityLimit limit = sceneStability(registry, mysim::buildModel(scene), runConfig(scene),
-                                              "mysim:euler", settings);
+  const StabilityLimit limit =
+      sceneStability(registry, mysim::buildModel(scene), runConfig(scene), "mysim:euler", settings);
   ASSERT_EQ(limit.status, "bracketed");
   mysim::Scene converged = scene;
   converged.integrator.name = "rk4";
@@ -88,14 +88,16 @@ TEST(BoundedInstability, EveryStepTheSearchCallsStableEndsAtTheConvergedEnergy) 
   auto reference = registry.run("mysim", converged);
   ASSERT_TRUE(reference);
   const double e_ref = reference->energies.back().total();
-  const auto bound = mysim::ParticleSystem(mysim::buildModel(scene), scene.limits).energyRiseLimit();
+  const auto bound =
+      mysim::ParticleSystem(mysim::buildModel(scene), scene.limits).energyRiseLimit();
   ASSERT_TRUE(bound);
   for (double fraction : {1.0, 0.9, 0.7, 0.5}) {
     mysim::Scene s = scene;
     s.dt = limit.h_stable * fraction;
     auto run = registry.run("mysim", s);
     ASSERT_TRUE(run);
-    ASSERT_FALSE(run->blowup) << "h = " << s.dt << " of " << limit.h_stable << ": " << run->blowup->check << " at " << run->blowup->time;
+    ASSERT_FALSE(run->blowup) << "h = " << s.dt << " of " << limit.h_stable << ": "
+                              << run->blowup->check << " at " << run->blowup->time;
     EXPECT_NEAR(run->energies.back().total(), e_ref,
                 fraction < 1.0 ? 0.01 * std::abs(e_ref) : *bound)
         << "h = " << s.dt;

@@ -55,8 +55,8 @@ TEST(Circle, IsNotAParticleSystemSoSecondOrderIntegratorsCannotRunIt) {
   EXPECT_EQ(circle.particles(), nullptr);
   // The catalog says which integrators need particles; those are exactly the second-order ones.
   for (const IntegratorInfo& info : integratorCatalog()) {
-    const bool second_order = info.name == "symplectic-euler" || info.name == "verlet" ||
-                              info.name == "backward-euler";
+    const bool second_order =
+        info.name == "symplectic-euler" || info.name == "verlet" || info.name == "backward-euler";
     EXPECT_EQ(info.needs_particles, second_order) << info.name;
   }
 }

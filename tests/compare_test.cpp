@@ -3,19 +3,19 @@
 
 #include <numbers>
 
-#include "compare/closed_form.h"
-#include "compare/drape_metric.h"
-#include "compare/energy_metric.h"
-#include "compare/gate.h"
-#include "compare/penetration_metric.h"
-#include "compare/run_metrics.h"
-#include "compare/sag_metric.h"
-#include "compare/settling_metric.h"
-#include "mysim/scene_file.h"
-#include "compare/surface_distance.h"
-#include "compare/tolerances.h"
+#include "compare/metrics/closed_form.h"
+#include "compare/metrics/drape_metric.h"
+#include "compare/metrics/energy_metric.h"
+#include "compare/metrics/penetration_metric.h"
+#include "compare/metrics/run_metrics.h"
+#include "compare/metrics/sag_metric.h"
+#include "compare/metrics/settling_metric.h"
+#include "compare/metrics/surface_distance.h"
+#include "compare/studies/gate.h"
+#include "compare/studies/tolerances.h"
 #include "mysim/cloth.h"
 #include "mysim/cloth_mesh.h"
+#include "mysim/scene_file.h"
 
 namespace springcheck {
 namespace {
@@ -226,7 +226,8 @@ mysim::Scene chainScene(const std::string& integrator_fields) {
   auto scene = mysim::parseScene(
       R"({"system": {"type": "chain", "particles": 4, "rest_length": 0.1, "particle_mass": 0.01,
           "stiffness": 100}, "forces": {"gravity": [0, -9.8, 0]},
-          "integrator": {"dt": 0.01, "duration": 0.2, )" + integrator_fields + "}}",
+          "integrator": {"dt": 0.01, "duration": 0.2, )" +
+          integrator_fields + "}}",
       "status.json");
   EXPECT_TRUE(scene) << scene.error();
   return *scene;
@@ -247,7 +248,8 @@ TEST(RunStatus, AnUnreachableAdaptiveToleranceStopsTheRunAsAStepLimit) {
 // than asked, instead of only counting it.
 TEST(RunStatus, LinearSolvesThatStopShortAreAStatusNotJustACount) {
   const auto run = EngineRegistry().run(
-      "mysim", chainScene(R"("name": "backward-euler", "cg_max_iterations": 1, "cg_tolerance": 1e-12)"));
+      "mysim",
+      chainScene(R"("name": "backward-euler", "cg_max_iterations": 1, "cg_tolerance": 1e-12)"));
   ASSERT_TRUE(run) << run.error().message;
   EXPECT_FALSE(run->blowup);
   EXPECT_GT(run->counts.solver_failures, 0);

@@ -1,6 +1,6 @@
 // External engines: the example Python engine against closed forms and mysim, the model file,
 // and every way an engine can misbehave, each refused with a message naming engine and file.
-#include "compare/external_engine.h"
+#include "compare/engines/external_engine.h"
 
 #include <gtest/gtest.h>
 
@@ -8,9 +8,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "compare/closed_form.h"
-#include "compare/drape_metric.h"
-#include "compare/npy.h"
+#include "compare/io/npy.h"
+#include "compare/metrics/closed_form.h"
+#include "compare/metrics/drape_metric.h"
 #include "mysim/wind.h"
 
 namespace springcheck {
@@ -59,9 +59,8 @@ TEST(ExamplePythonEngine, MatchesMysimSymplecticEulerToRoundOff) {
   double worst = 0.0;
   for (std::size_t f = 0; f < own->frames.size(); ++f) {
     EXPECT_DOUBLE_EQ(external->times[f], own->times[f]);
-    worst = std::max(worst, nodeDistance(external->frames[f].leftCols<3>(),
-                                         own->frames[f].leftCols<3>())
-                                .max);
+    worst = std::max(
+        worst, nodeDistance(external->frames[f].leftCols<3>(), own->frames[f].leftCols<3>()).max);
   }
   // A 1 m cloth: a few ulps (1e-16 m) a step over 1000 steps, far below 1e-9 m; a different
   // force law or step order is off by millimetres.
@@ -76,7 +75,8 @@ TEST(ModelFile, HoldsEveryParticleSpringFrameTimeAndTheWindTable) {
   const mysim::Model model = mysim::buildModel(windy);
   const RunConfig config = runConfig(windy);
   const FramePlan plan = framePlan(config.run, false);
-  const fs::path dir = fs::temp_directory_path() / ("springcheck_model_" + std::to_string(getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("springcheck_model_" + std::to_string(getpid()));
   ASSERT_TRUE(writeModelFile(dir.string(), model, config, plan));
   nlohmann::json j = nlohmann::json::parse(std::ifstream(dir / "model.json"));
   EXPECT_EQ(j["particles"]["count"], model.particleCount());
@@ -139,7 +139,8 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(Misbehaviour{"exit-code", "exited with code 3"},
                       Misbehaviour{"timeout", "killed at its time limit of 3 s"},
                       Misbehaviour{"wrong-shape", "trajectory.npy: expected shape"},
-                      Misbehaviour{"particle-count", "trajectory.npy: 8 particles, the model has 9"},
+                      Misbehaviour{"particle-count",
+                                   "trajectory.npy: 8 particles, the model has 9"},
                       Misbehaviour{"nan", "trajectory.npy: non-finite value in frame"},
                       Misbehaviour{"short", "declares no blow-up: the run is incomplete"},
                       Misbehaviour{"wrong-times", "times.npy: frame 1 at t"},
@@ -164,7 +165,8 @@ TEST(MisbehavingEngine, ADeclaredBlowUpIsAcceptedAsABlowUpAtItsTime) {
 }
 
 TEST(EnginesFile, MalformedEntriesAreRefusedNamingTheField) {
-  const fs::path path = fs::temp_directory_path() / ("springcheck_engines_" + std::to_string(getpid()) + ".json");
+  const fs::path path =
+      fs::temp_directory_path() / ("springcheck_engines_" + std::to_string(getpid()) + ".json");
   struct Case {
     std::string text, expected;
   };

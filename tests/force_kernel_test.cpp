@@ -58,8 +58,8 @@ TEST(SpringForceKernel, EqualsThePerEndReferenceAtOneAndTwoThreadsWithAndWithout
       const double worst = (fast - reference).cwiseAbs().maxCoeff();
       // Round-off: the same operations in the same order give the same bits; allow a few ulps of
       // the largest force in case a compiler reorders.
-      EXPECT_LE(worst, 1e-14 * scale) << "kernel " << springForcesKernel() << ", " << threads
-                                      << " threads";
+      EXPECT_LE(worst, 1e-14 * scale)
+          << "kernel " << springForcesKernel() << ", " << threads << " threads";
     }
   }
   setSpringForcesSimd(true);

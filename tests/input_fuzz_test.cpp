@@ -13,9 +13,9 @@
 #include <random>
 #include <sstream>
 
-#include "compare/external_engine.h"
-#include "compare/sweep.h"
-#include "compare/tolerances.h"
+#include "compare/engines/external_engine.h"
+#include "compare/studies/sweep.h"
+#include "compare/studies/tolerances.h"
 #include "mysim/scene_file.h"
 
 namespace springcheck {
@@ -32,11 +32,33 @@ std::string readText(const fs::path& path) {
 
 // Replacements for a value: the cases that once crashed or slipped through, and their kin.
 const std::vector<std::string>& hostileValues() {
-  static const std::vector<std::string> values = {
-      "1e400", "-1e400", "0", "-0", "-1", "1e-320", "1e308", "4294967297", "-9223372036854775809",
-      "18446744073709551616", "0.5", "1e9", "1e300", "NaN", "Infinity", "\"x\"", "\"\"",
-      "\"../../x\"", "\"a,b\"", "null", "true", "[]", "{}", "[1, 2, 3]", "{\"a\": 1}",
-      std::string(200, '[') + std::string(200, ']'), "\"" + std::string(5000, 'z') + "\""};
+  static const std::vector<std::string> values = {"1e400",
+                                                  "-1e400",
+                                                  "0",
+                                                  "-0",
+                                                  "-1",
+                                                  "1e-320",
+                                                  "1e308",
+                                                  "4294967297",
+                                                  "-9223372036854775809",
+                                                  "18446744073709551616",
+                                                  "0.5",
+                                                  "1e9",
+                                                  "1e300",
+                                                  "NaN",
+                                                  "Infinity",
+                                                  "\"x\"",
+                                                  "\"\"",
+                                                  "\"../../x\"",
+                                                  "\"a,b\"",
+                                                  "null",
+                                                  "true",
+                                                  "[]",
+                                                  "{}",
+                                                  "[1, 2, 3]",
+                                                  "{\"a\": 1}",
+                                                  std::string(200, '[') + std::string(200, ']'),
+                                                  "\"" + std::string(5000, 'z') + "\""};
   return values;
 }
 
@@ -66,7 +88,9 @@ std::vector<std::pair<std::size_t, std::size_t>> scalarTokens(const std::string&
 }
 
 std::string mutate(const std::string& base, std::mt19937_64& random) {
-  auto pick = [&](std::size_t n) { return static_cast<std::size_t>(random() % std::max<std::size_t>(n, 1)); };
+  auto pick = [&](std::size_t n) {
+    return static_cast<std::size_t>(random() % std::max<std::size_t>(n, 1));
+  };
   std::string text = base;
   const auto tokens = scalarTokens(text);
   switch (pick(7)) {
@@ -113,10 +137,10 @@ std::string mutate(const std::string& base, std::mt19937_64& random) {
 // The outcome class of a refusal, for the summary.
 std::string outcome(const std::string& error, const std::string& source) {
   const std::string rest = error.substr(source.size() + 2);
-  for (const char* cls : {"not valid JSON", "given twice", "nested deeper", "double range",
-                          "unknown field", "missing (required)", "unknown scene", "unknown engine",
-                          "unknown metric", "unknown integrator", "is taken", "placeholder",
-                          "GiB", "at most 1e+09"}) {
+  for (const char* cls :
+       {"not valid JSON", "given twice", "nested deeper", "double range", "unknown field",
+        "missing (required)", "unknown scene", "unknown engine", "unknown metric",
+        "unknown integrator", "is taken", "placeholder", "GiB", "at most 1e+09"}) {
     if (rest.find(cls) != std::string::npos) return cls;
   }
   if (rest.find("expected") != std::string::npos) return "expected (type or range)";
@@ -133,12 +157,14 @@ TEST(InputFuzz, EveryMutatedInputIsAcceptedOrRefusedNamingItsSourceNeverACrash) 
   for (const auto& e : fs::recursive_directory_iterator(root / "scenes")) {
     if (e.path().extension() == ".json") bases.push_back({"scene", e.path()});
   }
-  for (const auto& e : fs::directory_iterator(root / "compare/sweeps")) bases.push_back({"sweep", e.path()});
+  for (const auto& e : fs::directory_iterator(root / "compare/sweeps"))
+    bases.push_back({"sweep", e.path()});
   bases.push_back({"tolerances", root / "compare/tolerances.json"});
   bases.push_back({"tolerances", root / "examples/external/tolerances.json"});
   bases.push_back({"engines", root / "examples/external/engines.json"});
   bases.push_back({"engines", root / "tests/data/misbehaving_engines.json"});
-  std::sort(bases.begin(), bases.end(), [](const Base& a, const Base& b) { return a.path < b.path; });
+  std::sort(bases.begin(), bases.end(),
+            [](const Base& a, const Base& b) { return a.path < b.path; });
 
   constexpr int kMutationsPerFile = 500;
   std::mt19937_64 random(20261124);
@@ -148,7 +174,8 @@ TEST(InputFuzz, EveryMutatedInputIsAcceptedOrRefusedNamingItsSourceNeverACrash) 
   for (const Base& base : bases) {
     const std::string original = readText(base.path);
     // The mutated text stands in the original's place, so its relative paths resolve.
-    const std::string source = (base.path.parent_path() / ("fuzz-" + base.path.filename().string())).string();
+    const std::string source =
+        (base.path.parent_path() / ("fuzz-" + base.path.filename().string())).string();
     for (int m = 0; m < kMutationsPerFile; ++m) {
       const std::string text = mutate(original, random);
       EngineRegistry registry;
@@ -158,8 +185,10 @@ TEST(InputFuzz, EveryMutatedInputIsAcceptedOrRefusedNamingItsSourceNeverACrash) 
       if (base.kind == "scene") {
         auto scene = mysim::parseScene(text, source, registry.sceneSections());
         ok = scene.has_value();
-        if (ok) mysim::buildModel(*scene);
-        else error = scene.error();
+        if (ok)
+          mysim::buildModel(*scene);
+        else
+          error = scene.error();
       } else if (base.kind == "sweep") {
         auto spec = parseSweepSpec(text, source, registry);
         ok = spec.has_value();
@@ -181,8 +210,8 @@ TEST(InputFuzz, EveryMutatedInputIsAcceptedOrRefusedNamingItsSourceNeverACrash) 
         ++accepted;
         continue;
       }
-      ASSERT_EQ(error.rfind(source + ": ", 0), 0u) << "refusal does not start with its source: "
-                                                   << error.substr(0, 300);
+      ASSERT_EQ(error.rfind(source + ": ", 0), 0u)
+          << "refusal does not start with its source: " << error.substr(0, 300);
       EXPECT_LT(error.size(), 1500u) << error.substr(0, 300);
       const std::string cls = outcome(error, source);
       if (cls == "other" && outcomes[base.kind + ": other"] < 2) {

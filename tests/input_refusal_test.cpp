@@ -6,10 +6,10 @@
 #include <filesystem>
 #include <fstream>
 
-#include "compare/atomic_file.h"
-#include "compare/csv.h"
-#include "compare/sweep.h"
-#include "compare/tolerances.h"
+#include "compare/io/atomic_file.h"
+#include "compare/io/csv.h"
+#include "compare/studies/sweep.h"
+#include "compare/studies/tolerances.h"
 
 namespace springcheck {
 namespace {
@@ -33,8 +33,8 @@ class InputFiles : public ::testing::Test {
   }
   // A sweep spec over the seed circle with `fields` spliced in.
   std::string spec(const std::string& fields) {
-    return file("spec.json", R"({"scenes": [")" + kRoot + R"(/scenes/seed/circle.json"], )" +
-                                 fields + "}");
+    return file("spec.json",
+                R"({"scenes": [")" + kRoot + R"(/scenes/seed/circle.json"], )" + fields + "}");
   }
   fs::path dir_;
   EngineRegistry registry_;
@@ -103,7 +103,7 @@ TEST(Csv, FieldsWithCommasQuotesAndLineBreaksSurviveTheRoundTrip) {
   ASSERT_EQ(back->size(), fields.size());
   EXPECT_EQ((*back)[1], "a,b");
   EXPECT_EQ((*back)[2], "say \"hi\"");
-  EXPECT_EQ((*back)[3], "two lines");  // one row stays one line
+  EXPECT_EQ((*back)[3], "two lines");         // one row stays one line
   EXPECT_FALSE(parseCsvLine("1,\"cut sho"));  // a row cut inside a quoted field
 }
 

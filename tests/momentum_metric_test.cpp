@@ -1,9 +1,10 @@
 // Momentum drift: zero where the model conserves momentum, found where a run breaks it, and not
 // reported where the model itself does not conserve it.
+#include "compare/metrics/momentum_metric.h"
+
 #include <gtest/gtest.h>
 
-#include "compare/engine_registry.h"
-#include "compare/momentum_metric.h"
+#include "compare/engines/engine_registry.h"
 
 namespace springcheck {
 namespace {
@@ -49,7 +50,8 @@ TEST(MomentumDrift, AnImpulseInTheRecordIsFound) {
   auto run = EngineRegistry().run("mysim", scene);
   ASSERT_TRUE(run);
   // 0.01 m/s more on particle 1 from the middle frame on: a 0.001 kg m/s push.
-  for (std::size_t f = run->frames.size() / 2; f < run->frames.size(); ++f) run->frames[f](1, 3) += 0.01;
+  for (std::size_t f = run->frames.size() / 2; f < run->frames.size(); ++f)
+    run->frames[f](1, 3) += 0.01;
   const auto d = momentumDrift(mysim::buildModel(scene), *run);
   ASSERT_TRUE(d);
   EXPECT_GT(d->linear, 1e-4);

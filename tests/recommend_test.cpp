@@ -1,5 +1,5 @@
 // recommend: the cheapest choice under an error bound, and the runner-up, worked out by hand.
-#include "compare/recommend.h"
+#include "compare/studies/recommend.h"
 
 #include <gtest/gtest.h>
 
@@ -33,11 +33,11 @@ SweepRow row(const std::string& engine, const std::string& integrator, double dt
 
 TEST(Recommend, PicksTheCheapestRowUnderTheBoundAndTheNextAsRunnerUp) {
   const std::vector<SweepRow> rows = {
-      row("mysim", "euler", 0.01, "ok", "0.5", 0.001, 100),     // cheapest, error too large
-      row("mysim", "rk4", 0.01, "ok", "1e-4", 0.004, 400),      // meets: 4 ms
-      row("mysim", "rk4", 0.005, "ok", "6e-6", 0.008, 800),     // meets: 8 ms
+      row("mysim", "euler", 0.01, "ok", "0.5", 0.001, 100),          // cheapest, error too large
+      row("mysim", "rk4", 0.01, "ok", "1e-4", 0.004, 400),           // meets: 4 ms
+      row("mysim", "rk4", 0.005, "ok", "6e-6", 0.008, 800),          // meets: 8 ms
       row("bullet-deformable", "-", 0.01, "blowup", "", 0.0005, 0),  // blew up: never chosen
-      row("mysim", "verlet", 0.01, "ok", "2e-4", 0.002, 200),   // just over the bound
+      row("mysim", "verlet", 0.01, "ok", "2e-4", 0.002, 200),        // just over the bound
   };
   const auto found = recommend(rows, 1.5e-4, Cost::WallTime);
   ASSERT_EQ(found.size(), 1u);
@@ -58,9 +58,9 @@ TEST(Recommend, EachEngineGetsItsOwnCheapestChoiceUnderTheBoundCheapestFirst) {
       row("bullet-deformable", "-", 0.01, "ok", "2e-3", 0.001, 0),   // too inaccurate
       row("bullet-deformable", "-", 0.005, "ok", "5e-4", 0.006, 0),  // deformable's best
       row("bullet-deformable", "-", 0.0025, "ok", "2e-4", 0.012, 0),
-      row("mysim", "rk4", 0.01, "ok", "1e-4", 0.004, 400),           // mysim's best (any integrator)
+      row("mysim", "rk4", 0.01, "ok", "1e-4", 0.004, 400),  // mysim's best (any integrator)
       row("mysim", "verlet", 0.01, "ok", "3e-4", 0.005, 200),
-      row("bullet-implicit", "-", 0.01, "ok", "9e-3", 0.002, 0),     // never meets it
+      row("bullet-implicit", "-", 0.01, "ok", "9e-3", 0.002, 0),  // never meets it
   };
   const auto found = recommend(rows, 1e-3, Cost::WallTime);
   ASSERT_EQ(found.size(), 1u);

@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "mysim/scene_file.h"
-#include "test_support.h"
 #include "mysim/simulation.h"
+#include "test_support.h"
 
 namespace mysim {
 namespace {

@@ -1,10 +1,11 @@
 // Spring force terms alone: the analytic Jacobians against central finite differences.
-#include "mysim/model.h"
 #include "mysim/spring.h"
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
+
+#include "mysim/model.h"
 
 namespace mysim {
 namespace {

@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "compare/engine_registry.h"
-#include "compare/natural_frequency.h"
-#include "compare/stability.h"
+#include "compare/engines/engine_registry.h"
+#include "compare/studies/natural_frequency.h"
+#include "compare/studies/stability.h"
 
 namespace springcheck {
 namespace {

@@ -1,12 +1,12 @@
 // Sweeps (table, resume, shards) and the stability search against theory.
-#include "compare/sweep.h"
+#include "compare/studies/sweep.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 
-#include "compare/stability.h"
+#include "compare/studies/stability.h"
 
 namespace springcheck {
 namespace {
@@ -137,7 +137,8 @@ class StabilityLimitAgreesWithTheory : public ::testing::TestWithParam<TheoryCas
 
 TEST_P(StabilityLimitAgreesWithTheory, OnTheOscillatorAtTwoStiffnesses) {
   for (double k : {10.0, 1e4}) {
-    const StabilityLimit l = oscillatorStability(EngineRegistry(), GetParam().integrator, k, 0.01, 0.05, {});
+    const StabilityLimit l =
+        oscillatorStability(EngineRegistry(), GetParam().integrator, k, 0.01, 0.05, {});
     ASSERT_EQ(l.status, "bracketed");
     const double ratio = l.h_stable / *l.theory;
     EXPECT_GE(ratio, GetParam().low) << k;
@@ -161,7 +162,8 @@ TEST(StabilityLimit, BackwardEulerIsStableAtTheLargestStepTried) {
   // floor on its threshold once produced NaN (conjugate_gradient.cpp).
   for (auto [k, m, zeta] :
        {std::tuple{1e3, 0.01, 0.0}, {10.0, 1.0, 0.05}, {100.0, 0.01, 0.05}, {100.0, 1.0, 0.05}}) {
-    const StabilityLimit l = oscillatorStability(EngineRegistry(), "backward-euler", k, m, zeta, {});
+    const StabilityLimit l =
+        oscillatorStability(EngineRegistry(), "backward-euler", k, m, zeta, {});
     EXPECT_EQ(l.status, "stable-at-max") << k << " " << m;  // h w = 100
   }
 }
@@ -197,7 +199,8 @@ TEST(SelfConsistentSweep, EachEngineConvergesAgainstItsOwnFinerRunAtItsOrder) {
           "sample_interval": 0.01, "reference": {"self": true, "refine": 16}})",
       SPRINGCHECK_SOURCE_DIR "/compare/sweeps/self.json", registry);
   ASSERT_TRUE(spec) << spec.error();
-  const fs::path out = fs::temp_directory_path() / ("springcheck_self_" + std::to_string(::getpid()) + ".csv");
+  const fs::path out =
+      fs::temp_directory_path() / ("springcheck_self_" + std::to_string(::getpid()) + ".csv");
   auto ran = runSweep(registry, *spec, out.string(), {.jobs = 2, .resume = false});
   ASSERT_TRUE(ran) << ran.error();
   const auto rows = *readSweepTable(out.string());
@@ -221,15 +224,16 @@ TEST(SelfConsistentSweep, EachEngineConvergesAgainstItsOwnFinerRunAtItsOrder) {
 // dopri5's tolerance is its own axis: a tighter tolerance, a smaller error, for the same step.
 TEST(ToleranceSweep, Dopri5ErrorFallsWithItsTolerance) {
   EngineRegistry registry;
-  auto spec = parseSweepSpec(
-      R"({"name": "tol", "scenes": [")" SPRINGCHECK_SOURCE_DIR
-      R"(/scenes/seed/circle.json"], "integrators": ["dopri5", "rk4"], "dt": [1.0],
+  auto spec =
+      parseSweepSpec(R"({"name": "tol", "scenes": [")" SPRINGCHECK_SOURCE_DIR
+                     R"(/scenes/seed/circle.json"], "integrators": ["dopri5", "rk4"], "dt": [1.0],
           "tolerance": [1e-3, 1e-6, 1e-9], "duration": 10.0, "reference": "closed_form"})",
-      SPRINGCHECK_SOURCE_DIR "/compare/sweeps/tol.json", registry);
+                     SPRINGCHECK_SOURCE_DIR "/compare/sweeps/tol.json", registry);
   ASSERT_TRUE(spec) << spec.error();
   const auto cases = expandSweep(*spec);
   ASSERT_EQ(cases.size(), 4u);  // dopri5 at three tolerances, rk4 once (not adaptive)
-  const fs::path out = fs::temp_directory_path() / ("springcheck_tol_" + std::to_string(::getpid()) + ".csv");
+  const fs::path out =
+      fs::temp_directory_path() / ("springcheck_tol_" + std::to_string(::getpid()) + ".csv");
   ASSERT_TRUE(runSweep(registry, *spec, out.string(), {.jobs = 1, .resume = false}));
   const auto rows = *readSweepTable(out.string());
   fs::remove(out);

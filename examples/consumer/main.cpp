@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <memory>
 
-#include "compare/closed_form.h"
-#include "compare/engine_registry.h"
+#include "compare/engines/engine_registry.h"
+#include "compare/metrics/closed_form.h"
 #include "mysim/integrator.h"
 #include "mysim/scene.h"
 
@@ -37,8 +37,8 @@ springcheck::Engine midpointEngine() {
       -> std::expected<springcheck::EngineInstance, springcheck::EngineError> {
     springcheck::EngineInstance instance;
     instance.system = mysim::makeSystem(model, config.limits);
-    instance.stepper = std::make_unique<mysim::IntegratorStepper>(*instance.system,
-                                                                  std::make_unique<Midpoint>());
+    instance.stepper =
+        std::make_unique<mysim::IntegratorStepper>(*instance.system, std::make_unique<Midpoint>());
     instance.start = instance.system->initialState();
     instance.integrator = "midpoint";
     return instance;

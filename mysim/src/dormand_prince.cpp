@@ -65,7 +65,7 @@ class DormandPrince final : public Integrator {
   }
 
  private:
-  static constexpr double kMinStep = 1e-10;  // of the scene step: 10^10 internal steps a step
+  static constexpr double kMinStep = 1e-10;   // of the scene step: 10^10 internal steps a step
   static constexpr long kMaxSteps = 100'000;  // trials in one scene step
 
   // Fills y5_ with the fifth-order solution at s.t + h and returns the scaled error norm.

@@ -35,10 +35,14 @@ const std::vector<IntegratorInfo>& integratorCatalog() {
 
 const char* preconditionerName(CgPreconditioner preconditioner) {
   switch (preconditioner) {
-    case CgPreconditioner::Auto: return "auto";
-    case CgPreconditioner::Jacobi: return "jacobi";
-    case CgPreconditioner::BlockJacobi: return "block-jacobi";
-    case CgPreconditioner::Ssor: return "ssor";
+    case CgPreconditioner::Auto:
+      return "auto";
+    case CgPreconditioner::Jacobi:
+      return "jacobi";
+    case CgPreconditioner::BlockJacobi:
+      return "block-jacobi";
+    case CgPreconditioner::Ssor:
+      return "ssor";
   }
   return "?";
 }
@@ -66,8 +70,8 @@ std::expected<std::string, std::string> canonicalIntegratorName(std::string_view
     valid += (valid.empty() ? "" : ", ") + info.name;
     if (!info.alias.empty()) valid += " (" + info.alias + ")";
   }
-  return std::unexpected("unknown integrator '" + clip(std::string(name), 40) + "'; expected one of " +
-                         valid);
+  return std::unexpected("unknown integrator '" + clip(std::string(name), 40) +
+                         "'; expected one of " + valid);
 }
 
 std::expected<std::unique_ptr<Integrator>, std::string> makeIntegrator(

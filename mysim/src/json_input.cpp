@@ -254,7 +254,8 @@ Vec3 FieldReader::unitVec3(const std::string& key, const Vec3& fallback) {
 }
 std::vector<double> FieldReader::positiveList(const std::string& key) {
   const json& list = raw(key);
-  if (!list.is_array() || list.empty()) failField(field(key), "a non-empty list of numbers > 0", list);
+  if (!list.is_array() || list.empty())
+    failField(field(key), "a non-empty list of numbers > 0", list);
   std::vector<double> values;
   for (std::size_t k = 0; k < list.size(); ++k) {
     const json& v = list[k];
@@ -270,12 +271,15 @@ std::vector<std::string> FieldReader::textList(const std::string& key) {
   if (!list.is_array() || list.empty()) failField(field(key), "a non-empty list of names", list);
   std::vector<std::string> values;
   for (std::size_t k = 0; k < list.size(); ++k) {
-    if (!list[k].is_string()) failField(field(key) + "[" + std::to_string(k) + "]", "a name", list[k]);
+    if (!list[k].is_string())
+      failField(field(key) + "[" + std::to_string(k) + "]", "a name", list[k]);
     values.push_back(list[k].get<std::string>());
   }
   return values;
 }
-FieldReader FieldReader::object(const std::string& key) { return FieldReader(raw(key), field(key)); }
+FieldReader FieldReader::object(const std::string& key) {
+  return FieldReader(raw(key), field(key));
+}
 
 void FieldReader::refuseUnknown(const std::string& schema) const {
   for (auto it = object_.begin(); it != object_.end(); ++it) {

@@ -13,15 +13,15 @@ double physicalMemoryBytes() {
   return pages > 0 && page > 0 ? static_cast<double>(pages) * page : 8e9;
 }
 
-std::optional<LimitError> checkRunLimits(double particles, double springs,
-                                         const RunSettings& run) {
+std::optional<LimitError> checkRunLimits(double particles, double springs, const RunSettings& run) {
   auto text = [](double v) {
     std::ostringstream s;
     s << v;
     return s.str();
   };
   if (!std::isfinite(run.duration) || !(run.duration > 0)) {
-    return LimitError{"integrator.duration", "expected a finite number > 0, got " + text(run.duration)};
+    return LimitError{"integrator.duration",
+                      "expected a finite number > 0, got " + text(run.duration)};
   }
   if (!std::isfinite(run.dt) || !(run.dt > 0)) {
     return LimitError{"integrator.dt", "expected a finite number > 0, got " + text(run.dt)};
@@ -33,8 +33,8 @@ std::optional<LimitError> checkRunLimits(double particles, double springs,
   const double steps = run.duration / run.dt;
   if (!(steps <= kMaxSteps)) {
     return LimitError{"integrator.dt", text(run.dt) + " s gives " + text(steps) + " steps over " +
-                                           text(run.duration) + " s; at most " +
-                                           text(kMaxSteps) + " (see mysim/run_limits.h)"};
+                                           text(run.duration) + " s; at most " + text(kMaxSteps) +
+                                           " (see mysim/run_limits.h)"};
   }
   if (!std::isfinite(run.sample_interval) || run.sample_interval < 0) {
     return LimitError{"output.sample_interval",

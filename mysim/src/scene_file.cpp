@@ -1,15 +1,14 @@
 #include "mysim/scene_file.h"
 
-#include "mysim/json_input.h"
-#include "mysim/run_limits.h"
-
-
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <fstream>
 #include <set>
 #include <sstream>
+
+#include "mysim/json_input.h"
+#include "mysim/run_limits.h"
 
 namespace mysim {
 namespace {
@@ -35,9 +34,9 @@ std::vector<int> readPins(FieldReader& system, int count, const std::vector<int>
     if (rows > 0 && preset == "corners") return {0, cols - 1, (rows - 1) * cols, rows * cols - 1};
     if (preset == "none") return {};
     failField(field,
-         rows > 0 ? "\"top_corners\", \"corners\", \"none\" or a list of particle indices"
-                  : "\"none\" or a list of particle indices",
-         v);
+              rows > 0 ? "\"top_corners\", \"corners\", \"none\" or a list of particle indices"
+                       : "\"none\" or a list of particle indices",
+              v);
   }
   if (!v.is_array()) failField(field, "a list of particle indices", v);
   std::vector<int> pins;
@@ -49,7 +48,8 @@ std::vector<int> readPins(FieldReader& system, int count, const std::vector<int>
     if (p < 0 || p >= count) {
       failField(item, "a particle index in [0, " + std::to_string(count - 1) + "]", v[k]);
     }
-    if (!unique.insert(static_cast<int>(p)).second) failField(item, "each particle pinned once", v[k]);
+    if (!unique.insert(static_cast<int>(p)).second)
+      failField(item, "each particle pinned once", v[k]);
     pins.push_back(static_cast<int>(p));
   }
   return pins;
@@ -90,7 +90,8 @@ void readCloth(FieldReader& system, Scene& scene) {
   c.particle_mass = system.positive("particle_mass");
   const std::string orientation = system.text("orientation", "horizontal");
   if (orientation != "horizontal" && orientation != "hanging") {
-    failField(system.field("orientation"), "\"horizontal\" or \"hanging\"", system.raw("orientation"));
+    failField(system.field("orientation"), "\"horizontal\" or \"hanging\"",
+              system.raw("orientation"));
   }
   c.hanging = orientation == "hanging";
   c.origin = system.vec3("origin", Vec3::Zero());
@@ -105,7 +106,8 @@ void readCloth(FieldReader& system, Scene& scene) {
 
 void readParticles(FieldReader& system, Scene& scene) {
   const json& list = system.raw("particles");
-  if (!list.is_array() || list.empty()) failField(system.field("particles"), "a non-empty list", list);
+  if (!list.is_array() || list.empty())
+    failField(system.field("particles"), "a non-empty list", list);
   for (std::size_t k = 0; k < list.size(); ++k) {
     FieldReader r(list[k], system.field("particles") + "[" + std::to_string(k) + "]");
     ExplicitParticle p;
@@ -187,8 +189,8 @@ std::pair<double, double> sizeOf(const Scene& scene) {
 
 void checkWhole(Scene& scene) {
   const auto [particles, springs] = sizeOf(scene);
-  if (auto error = checkRunLimits(particles, springs,
-                                  {scene.dt, scene.duration, scene.sample_interval})) {
+  if (auto error =
+          checkRunLimits(particles, springs, {scene.dt, scene.duration, scene.sample_interval})) {
     throw FieldError{error->field, error->message};
   }
   const int count = static_cast<int>(particles);
@@ -248,7 +250,8 @@ Scene readScene(const json& root, const std::vector<EngineSection>& sections) {
     scene.kind = SystemKind::Particles;
     readParticles(system, scene);
   } else {
-    failField("system.type", "\"circle\", \"chain\", \"cloth\" or \"particles\"", system.raw("type"));
+    failField("system.type", "\"circle\", \"chain\", \"cloth\" or \"particles\"",
+              system.raw("type"));
   }
   system.refuseUnknown("docs/scenes.md");
 

@@ -91,13 +91,13 @@ RunRecord simulate(OdeSystem& system, Stepper& stepper, State state, const RunSe
       if (rise_limit && e) {
         const double rise = e->total() - lowest;
         if (rise > *rise_limit) {
-          record.blowup = BlowUp{state.t, step, "energy-rise",
-                                 "total energy " + std::to_string(rise) +
-                                     " J above its lowest earlier value, more than " +
-                                     std::to_string(*rise_limit) +
-                                     " J (blowup.max_energy_rise, or max_energy_rise_damped with drag, of the "
-                                     "energy scale): a "
-                                     "passive scene cannot gain energy"};
+          record.blowup = BlowUp{
+              state.t, step, "energy-rise",
+              "total energy " + std::to_string(rise) +
+                  " J above its lowest earlier value, more than " + std::to_string(*rise_limit) +
+                  " J (blowup.max_energy_rise, or max_energy_rise_damped with drag, of the "
+                  "energy scale): a "
+                  "passive scene cannot gain energy"};
           break;
         }
         lowest = std::min(lowest, e->total());

@@ -91,8 +91,8 @@ bool& simdEnabled() {
 
 }  // namespace
 
-void springScales(const std::vector<Spring>& springs, bool damped, const double* x,
-                  const double* v, double* scale, int begin, int end) {
+void springScales(const std::vector<Spring>& springs, bool damped, const double* x, const double* v,
+                  double* scale, int begin, int end) {
   (simdEnabled() ? avx2Kernel : baselineKernel)(springs, damped, x, v, scale, begin, end);
 }
 

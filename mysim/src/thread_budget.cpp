@@ -99,8 +99,8 @@ void ThreadBudget::update() {
   if (!machine) return;
   const double own = processBusySeconds();
   // What the rest of the machine kept busy over the window, in cores.
-  const double others = std::max(0.0, (*machine - machine_busy_start_) - (own - own_busy_start_)) /
-                        wall;
+  const double others =
+      std::max(0.0, (*machine - machine_busy_start_) - (own - own_busy_start_)) / wall;
   apply(threadsFor(availableCores(), others, max_threads_));
   window_start_ = now;
   machine_busy_start_ = *machine;

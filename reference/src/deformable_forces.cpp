@@ -67,8 +67,8 @@ void DeformableLinkSpringForce::addScaledDampingForce(btScalar scale, TVStack& f
   });
 }
 
-void DeformableLinkSpringForce::addScaledDampingForceDifferential(btScalar scale,
-                                                                  const TVStack& dv, TVStack& df) {
+void DeformableLinkSpringForce::addScaledDampingForceDifferential(btScalar scale, const TVStack& dv,
+                                                                  TVStack& df) {
   forLinks([&](const btSoftBody::Link& link, const LinkParameters& p) {
     const int ia = link.m_n[0]->index, ib = link.m_n[1]->index;
     const btVector3 w = dv[ib] - dv[ia];
@@ -97,8 +97,8 @@ void DeformableLinkSpringForce::buildDampingForceDifferentialDiagonal(btScalar s
   });
 }
 
-void DeformableLinkSpringForce::addScaledElasticForceDifferential(btScalar scale,
-                                                                  const TVStack& dx, TVStack& df) {
+void DeformableLinkSpringForce::addScaledElasticForceDifferential(btScalar scale, const TVStack& dx,
+                                                                  TVStack& df) {
   forLinks([&](const btSoftBody::Link& link, const LinkParameters& p) {
     const int ia = link.m_n[0]->index, ib = link.m_n[1]->index;
     const btVector3 d = link.m_n[0]->m_q - link.m_n[1]->m_q;  // from b to a, as Bullet's

@@ -21,7 +21,8 @@ bool writePng(const std::string& path, int width, int height,
   image.height = static_cast<png_uint_32>(height);
   image.format = PNG_FORMAT_RGB;
   // libpng's simplified API: compressed, filtered, no setjmp needed; a failure is reported.
-  const bool written = png_image_write_to_stdio(&image, file, 0, rgb.data(), width * 3, nullptr) != 0;
+  const bool written =
+      png_image_write_to_stdio(&image, file, 0, rgb.data(), width * 3, nullptr) != 0;
   const bool closed = std::fclose(file) == 0;
   std::error_code error;
   if (!written || !closed) {

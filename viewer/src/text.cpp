@@ -21,9 +21,11 @@ bool Text::load(const std::string& font_file, float pixel_height, std::string& e
   const std::vector<unsigned char> font((std::istreambuf_iterator<char>(in)),
                                         std::istreambuf_iterator<char>());
   stbtt_fontinfo info;
-  if (font.empty() || !stbtt_InitFont(&info, font.data(), stbtt_GetFontOffsetForIndex(font.data(), 0))) {
-    error = font_file + ": cannot read a TrueType font (install fonts-dejavu-core, or set "
-                        "SPRINGCHECK_VIEWER_FONT to a .ttf file)";
+  if (font.empty() ||
+      !stbtt_InitFont(&info, font.data(), stbtt_GetFontOffsetForIndex(font.data(), 0))) {
+    error = font_file +
+            ": cannot read a TrueType font (install fonts-dejavu-core, or set "
+            "SPRINGCHECK_VIEWER_FONT to a .ttf file)";
     return false;
   }
   std::vector<unsigned char> atlas(kAtlas * kAtlas);
@@ -40,8 +42,8 @@ bool Text::load(const std::string& font_file, float pixel_height, std::string& e
   line_height_ = scale * (ascent - descent + gap) + 2;
   glyphs_.clear();
   for (const stbtt_bakedchar& b : baked) {
-    glyphs_.push_back({float(b.x0), float(b.y0), float(b.x1), float(b.y1), b.xoff, b.yoff,
-                       b.xadvance});
+    glyphs_.push_back(
+        {float(b.x0), float(b.y0), float(b.x1), float(b.y1), b.xoff, b.yoff, b.xadvance});
   }
   glGenTextures(1, &texture_);
   glBindTexture(GL_TEXTURE_2D, texture_);

@@ -19,7 +19,8 @@ class Text {
   // `max_width`; a message is shown whole, over as many lines as it needs.
   std::vector<std::string> wrap(const std::string& text, float max_width) const;
   // Draws `text` with its top left at (x, y); returns the y of the next line.
-  float draw(float x, float y, const std::string& text, float r = 1, float g = 1, float b = 1) const;
+  float draw(float x, float y, const std::string& text, float r = 1, float g = 1,
+             float b = 1) const;
   // draw() of every line of wrap(); returns the y below the last.
   float drawWrapped(float x, float y, const std::string& text, float max_width, float r = 1,
                     float g = 1, float b = 1) const;
@@ -27,7 +28,7 @@ class Text {
  private:
   static constexpr int kFirst = 32, kCount = 95, kAtlas = 512;
   struct Glyph {
-    float x0, y0, x1, y1;     // in the atlas, pixels
+    float x0, y0, x1, y1;  // in the atlas, pixels
     float xoff, yoff, advance;
   };
   std::vector<Glyph> glyphs_;

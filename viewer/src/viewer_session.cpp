@@ -85,7 +85,8 @@ void ViewerSession::build() {
 
 void ViewerSession::frameCamera() {
   // Framed on the first engine that runs (the first may have refused the scene).
-  auto shown = std::find_if(engines_.begin(), engines_.end(), [](const EngineView& e) { return e.system != nullptr; });
+  auto shown = std::find_if(engines_.begin(), engines_.end(),
+                            [](const EngineView& e) { return e.system != nullptr; });
   if (shown == engines_.end()) return;
   const auto rows = shown->system->particleRows(shown->state);
   const Eigen::Vector3d low = rows.leftCols<3>().colwise().minCoeff();

@@ -87,7 +87,8 @@ void lookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target) {
 // the triangle's circumradius. Drawing the true sphere would show it through the cloth as dark
 // holes where no node is inside; the sphere is drawn smaller by the largest such dip among the
 // triangles near it (docs/viewer.md). Nodes really inside still show it.
-double drawnSphereRadius(const mysim::Model& model, const Eigen::Matrix<double, Eigen::Dynamic, 6>& rows) {
+double drawnSphereRadius(const mysim::Model& model,
+                         const Eigen::Matrix<double, Eigen::Dynamic, 6>& rows) {
   const mysim::Sphere& sphere = *model.sphere;
   const double surface = sphere.radius + sphere.margin;
   if (!model.grid) return sphere.radius;
@@ -99,7 +100,8 @@ double drawnSphereRadius(const mysim::Model& model, const Eigen::Matrix<double, 
     const double area2 = (b - a).cross(c - a).norm();
     if (area2 <= 0) continue;
     const double rho = (b - a).norm() * (c - b).norm() * (a - c).norm() / (2 * area2);
-    dip = std::max(dip, rho < surface ? surface - std::sqrt(surface * surface - rho * rho) : surface);
+    dip =
+        std::max(dip, rho < surface ? surface - std::sqrt(surface * surface - rho * rho) : surface);
   }
   return std::max(0.5 * sphere.radius, std::min(sphere.radius, surface - dip));
 }
@@ -299,8 +301,8 @@ void render(ViewerSession& session, const Text& text, int width, int height,
   }
   glEnd();
 
-  std::string top = session.scene().name + "    t " + format("%.2f s", session.time()) +
-                    "    dt " + format("%.4g s", session.dt()) + "    " + rate;
+  std::string top = session.scene().name + "    t " + format("%.2f s", session.time()) + "    dt " +
+                    format("%.4g s", session.dt()) + "    " + rate;
   if (session.speed() < 0.99) top += "    slow motion x" + format("%.2f", session.speed());
   if (session.paused()) top += "    paused";
   if (session.togglesApply()) {
@@ -327,8 +329,8 @@ void render(ViewerSession& session, const Text& text, int width, int height,
     if (e.engine == "mysim" && session.activeIntegrator() != session.integrator()) {
       stepped += " (" + session.integrator() + " needs particles)";
     }
-    y = text.drawWrapped(x, y, e.engine + (stepped.empty() ? "" : ": " + stepped), max_width,
-                         1.0f, 0.85f, 0.4f);
+    y = text.drawWrapped(x, y, e.engine + (stepped.empty() ? "" : ": " + stepped), max_width, 1.0f,
+                         0.85f, 0.4f);
     if (!e.refused.empty()) {
       text.drawWrapped(x, y, "refused: " + e.refused, max_width, 1.0f, 0.55f, 0.55f);
       continue;
@@ -336,8 +338,9 @@ void render(ViewerSession& session, const Text& text, int width, int height,
     if (auto en = session.energy(e)) y = text.draw(x, y, "total energy " + format("%.5g J", *en));
     y = text.draw(x, y, "stepping " + format("%.2f ms per frame", 1e3 * e.step_seconds));
     if (e.blowup_time) {
-      text.drawWrapped(x, y, "blew up at t " + format("%.3f s", *e.blowup_time) + ": " +
-                                 e.blowup_check, max_width, 1.0f, 0.35f, 0.35f);
+      text.drawWrapped(x, y,
+                       "blew up at t " + format("%.3f s", *e.blowup_time) + ": " + e.blowup_check,
+                       max_width, 1.0f, 0.35f, 0.35f);
     }
   }
   text.drawWrapped(10, height - l.bottom_band + 5,
@@ -434,11 +437,10 @@ int runWindow(ViewerSession& session, const WindowOptions& options) {
     int width = 0, height = 0;
     glfwGetFramebufferSize(window, &width, &height);
     ++frame;
-    const std::string rate =
-        options.frames > 0
-            ? "frame " + std::to_string(frame) + " of " + std::to_string(options.frames) +
-                  " (1/60 s of simulated time each)"
-            : format("%.0f frames/s", fps);
+    const std::string rate = options.frames > 0 ? "frame " + std::to_string(frame) + " of " +
+                                                      std::to_string(options.frames) +
+                                                      " (1/60 s of simulated time each)"
+                                                : format("%.0f frames/s", fps);
     render(session, text, width, height, rate);
     if (ws.screenshot_requested) {
       ws.screenshot_requested = false;

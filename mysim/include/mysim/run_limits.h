@@ -23,8 +23,7 @@ struct LimitError {
 // The run of `particles` particles and `springs` springs with these settings: finite positive
 // dt <= duration, at most kMaxSteps steps, a finite sample interval, and an estimated memory
 // (state, integrator buffers, springs, sampled trajectory) within half the machine's.
-std::optional<LimitError> checkRunLimits(double particles, double springs,
-                                         const RunSettings& run);
+std::optional<LimitError> checkRunLimits(double particles, double springs, const RunSettings& run);
 
 // The machine's physical memory, bytes.
 double physicalMemoryBytes();

@@ -21,8 +21,8 @@ struct RunRecord {
   double duration = 0.0;  // requested
   long steps = 0;         // scene steps taken
   StepCounts counts;
-  double wall_seconds = 0.0;          // stepping alone: no set-up, sampling or output
-  double wall_median_seconds = 0.0;   // over `repeats` identical runs (wall_seconds: the fastest)
+  double wall_seconds = 0.0;         // stepping alone: no set-up, sampling or output
+  double wall_median_seconds = 0.0;  // over `repeats` identical runs (wall_seconds: the fastest)
   int repeats = 1;
   int threads = 1;                    // the most OpenMP threads the run stepped with
   std::vector<double> times;          // (F) s

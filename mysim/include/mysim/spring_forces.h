@@ -17,8 +17,8 @@ namespace mysim {
 // baseline x86-64 every machine has (two), and the AVX2 one runs where the CPU reports it. Both
 // do the same IEEE operations in the same order (no fused multiply-add), so they give the same
 // bits. `damped`: whether any spring has damping (else velocities are not read).
-void springScales(const std::vector<Spring>& springs, bool damped, const double* x,
-                  const double* v, double* scale, int begin, int end);
+void springScales(const std::vector<Spring>& springs, bool damped, const double* x, const double* v,
+                  double* scale, int begin, int end);
 
 // "avx2" or "baseline": which compilation springScales runs.
 const char* springForcesKernel();

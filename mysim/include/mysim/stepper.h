@@ -21,9 +21,7 @@ class IntegratorStepper final : public Stepper {
  public:
   IntegratorStepper(OdeSystem& system, std::unique_ptr<Integrator> integrator)
       : system_(system), integrator_(std::move(integrator)) {}
-  StepCounts step(State& state, double h) override {
-    return integrator_->step(system_, state, h);
-  }
+  StepCounts step(State& state, double h) override { return integrator_->step(system_, state, h); }
 
  private:
   OdeSystem& system_;

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "compare/engine_registry.h"
+#include "compare/engines/engine_registry.h"
 #include "mysim/integrator.h"
 #include "mysim/scene.h"
 

@@ -1,0 +1,74 @@
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "commands.h"
+#include "compare/studies/comparison.h"
+
+namespace springcheck {
+namespace {
+
+struct CompareOptions {
+  std::string scene_path;
+  std::string engines;  // empty: every engine of the registry
+  std::string out;
+  std::vector<std::string> engines_files;
+  Timing timing;
+};
+
+std::vector<std::string> splitList(const std::string& text) {
+  std::vector<std::string> items;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');) {
+    if (!item.empty()) items.push_back(item);
+  }
+  return items;
+}
+
+int compare(const CompareOptions& o) {
+  const std::optional<EngineRegistry> registry = makeRegistry(o.engines_files);
+  if (!registry) return kBadInput;
+  auto scene = registry->loadScene(o.scene_path);
+  if (!scene) {
+    std::cerr << "error: " << scene.error() << '\n';
+    return kBadInput;
+  }
+  const std::vector<std::string> engines =
+      o.engines.empty() ? registry->names() : splitList(o.engines);
+  auto comparison = compareScene(*registry, *scene, engines, o.timing);
+  if (!comparison) {
+    std::cerr << "error: " << comparison.error() << '\n';
+    return kBadInput;
+  }
+  printComparison(std::cout, *comparison);
+  const std::string dir = o.out.empty() ? "out/compare/" + scene->name : o.out;
+  if (auto written = writeComparison(dir, *comparison); !written) {
+    std::cerr << "error: " << written.error() << '\n';
+    return kFailure;
+  }
+  std::cout << "results in " << dir << '\n';
+  if (!comparison->failed.empty()) return kEngineFailed;
+  // A blow-up outranks a solver limit: it is the stronger statement about a run.
+  int code = kOk;
+  for (const EngineMetrics& m : comparison->engines) {
+    if (m.status == "blowup") return kBlowUp;
+    if (m.status != "ok") code = kSolverLimit;
+  }
+  return code;
+}
+
+}  // namespace
+
+void addCompareCommand(CLI::App& app, int& exit_code) {
+  auto o = std::make_shared<CompareOptions>();
+  CLI::App* cmd = app.add_subcommand("compare", "Run a scene in several engines and compare");
+  cmd->add_option("scene", o->scene_path, "Scene file (JSON)")->required();
+  cmd->add_option("--engines", o->engines,
+                  "Comma-separated engines (default: every engine, your own included)");
+  addEnginesFileOption(cmd, o->engines_files);
+  cmd->add_option("--out", o->out, "Output directory (default out/compare/SCENE)");
+  addTimingOptions(cmd, o->timing, 1);
+  cmd->callback([o, &exit_code] { exit_code = compare(*o); });
+}
+
+}  // namespace springcheck

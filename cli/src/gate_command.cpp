@@ -1,0 +1,82 @@
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <tuple>
+
+#include "commands.h"
+#include "compare/io/atomic_file.h"
+#include "compare/studies/gate.h"
+#include "compare/studies/gate_report_formats.h"
+#include "data_dir.h"
+
+namespace springcheck {
+
+void addGateCommand(CLI::App& app, int& exit_code) {
+  auto path = std::make_shared<std::string>(dataFile("compare/tolerances.json"));
+  auto json_out = std::make_shared<std::string>();
+  auto junit_out = std::make_shared<std::string>();
+  auto markdown_out = std::make_shared<std::string>();
+  auto engines_files = std::make_shared<std::vector<std::string>>();
+  CLI::App* cmd = app.add_subcommand("gate", "Check every bound of a tolerances file");
+  cmd->add_option("--tolerances", *path, "Tolerances file")->capture_default_str();
+  cmd->add_option("--json", *json_out, "Also write every check's result to this JSON file");
+  cmd->add_option("--junit", *junit_out,
+                  "Also write JUnit XML here: one test case per check, failures with the "
+                  "measured value, the bound and its reason (for CI systems)");
+  cmd->add_option("--markdown", *markdown_out,
+                  "Also write a markdown table here (failures first), for a pull-request comment");
+  addEnginesFileOption(cmd, *engines_files);
+  cmd->callback([path, json_out, junit_out, markdown_out, engines_files, &exit_code] {
+    std::optional<EngineRegistry> registry = makeRegistry(*engines_files);
+    if (!registry) {
+      exit_code = kBadInput;
+      return;
+    }
+    auto tolerances = loadTolerances(*path, *registry);
+    if (!tolerances) {
+      std::cerr << "error: " << tolerances.error() << '\n';
+      exit_code = kBadInput;
+      return;
+    }
+    const GateReport report = runGate(*registry, *tolerances);
+    printGate(std::cout, report);
+    if (!json_out->empty()) {
+      nlohmann::json results = nlohmann::json::array();
+      for (const CheckResult& r : report.results) {
+        results.push_back(
+            {{"scene", r.check.scene},
+             {"engines", r.check.engines},
+             {"metric", r.check.metric},
+             {"bound", r.check.bound},
+             {"why", r.check.why},
+             {"passed", r.passed},
+             {"problem", r.problem},
+             {"measured", r.measured ? nlohmann::json(*r.measured) : nlohmann::json()}});
+      }
+      const nlohmann::json all = {{"tolerances", *path}, {"checks", results}};
+      if (auto written = writeFileAtomically(
+              *json_out, [&](std::ostream& out) { out << all.dump(2) << '\n'; });
+          !written) {
+        std::cerr << "error: --json: " << written.error() << '\n';
+        exit_code = kFailure;
+        return;
+      }
+    }
+    for (const auto& [file, flag, write] :
+         {std::tuple{*junit_out, "--junit", &writeJunit},
+          std::tuple{*markdown_out, "--markdown", &writeGateMarkdown}}) {
+      if (file.empty()) continue;
+      if (auto written =
+              writeFileAtomically(file, [&](std::ostream& out) { write(out, report, *path); });
+          !written) {
+        std::cerr << "error: " << flag << ": " << written.error() << '\n';
+        exit_code = kFailure;
+        return;
+      }
+    }
+    exit_code = report.passed() ? kOk : kFailure;
+  });
+}
+
+}  // namespace springcheck

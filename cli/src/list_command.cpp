@@ -1,0 +1,60 @@
+#include <iostream>
+#include <memory>
+
+#include "commands.h"
+#include "compare/io/scene_files.h"
+
+namespace springcheck {
+namespace {
+
+struct ListOptions {
+  std::string dir = "scenes";
+  std::vector<std::string> engines_files;
+};
+
+int listAll(const ListOptions& o) {
+  const std::optional<EngineRegistry> registry = makeRegistry(o.engines_files);
+  if (!registry) return kBadInput;
+  const std::string& dir = o.dir;
+  std::cout << "Integrators:\n";
+  for (const mysim::IntegratorInfo& info : mysim::integratorCatalog()) {
+    std::cout << "  " << info.name << (info.alias.empty() ? "" : " (" + info.alias + ")") << "  "
+              << info.description << '\n';
+  }
+  std::cout << "Engines:\n";
+  for (const Engine& e : registry->engines()) {
+    std::cout << "  " << e.name << (e.takes_integrator ? "[:INTEGRATOR]" : "") << "  (" << e.kind
+              << ") " << e.description << '\n';
+  }
+  std::cout << "Scenes in " << dir << ":\n";
+  auto files = sceneFiles(dir);
+  if (!files) {
+    std::cerr << "error: " << files.error() << '\n';
+    return kBadInput;
+  }
+  int code = kOk;
+  for (const std::string& file : *files) {
+    auto scene = registry->loadScene(file);
+    if (!scene) {
+      std::cerr << "error: " << scene.error() << '\n';
+      code = kBadInput;
+      continue;
+    }
+    std::cout << "  " << file << "  " << mysim::systemKindName(scene->kind) << ", "
+              << scene->integrator.name << ", dt " << scene->dt << " s: " << scene->description
+              << '\n';
+  }
+  return code;
+}
+
+}  // namespace
+
+void addListCommand(CLI::App& app, int& exit_code) {
+  auto o = std::make_shared<ListOptions>();
+  CLI::App* list = app.add_subcommand("list", "List integrators, engines and scenes");
+  list->add_option("dir", o->dir, "Scene directory")->capture_default_str();
+  addEnginesFileOption(list, o->engines_files);
+  list->callback([o, &exit_code] { exit_code = listAll(*o); });
+}
+
+}  // namespace springcheck

@@ -1,0 +1,206 @@
+// springcheck recommend: the cheapest engine, integrator and step under an error bound, from a
+// sweep table, a sweep spec (run first) or a scene (a sweep around its step is run first).
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "commands.h"
+#include "compare/io/atomic_file.h"
+#include "compare/io/progress.h"
+#include "compare/studies/recommend.h"
+#include "mysim/json_input.h"
+#include "mysim/thread_budget.h"
+
+namespace springcheck {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+struct RecommendOptions {
+  std::string target;
+  double max_error = 0.0;
+  std::string cost = "wall";
+  std::string json_out;
+  std::string table_out;
+  int jobs = 0;
+  std::vector<std::string> engines_files;
+  Timing timing;
+};
+
+// A sweep around a scene's own step: every engine and fixed-step integrator at 4, 2, 1, 1/2 and
+// 1/4 times the scene's dt, against RK4 at a step 16 times finer than the finest.
+std::string sweepAroundScene(const EngineRegistry& registry, const std::string& path,
+                             const mysim::Scene& scene) {
+  json spec = {{"name", "recommend_" + scene.name},
+               {"scenes", {fs::absolute(path).lexically_normal().string()}},
+               {"engines", registry.names()},
+               {"integrators",
+                {"euler", "trapezoidal", "rk4", "symplectic-euler", "verlet", "backward-euler"}},
+               {"dt", {4 * scene.dt, 2 * scene.dt, scene.dt, scene.dt / 2, scene.dt / 4}},
+               {"sample_interval", 4 * scene.dt},
+               {"reference", {{"integrator", "rk4"}, {"refine", 16}}}};
+  return spec.dump();
+}
+
+json choiceJson(const std::optional<Choice>& c) {
+  if (!c) return nullptr;
+  return {{"engine", c->engine},
+          {"integrator", c->integrator},
+          {"tolerance", c->tolerance},
+          {"dt", c->dt},
+          {"error", c->error},
+          {"wall_seconds", c->wall_seconds},
+          {"realtime_factor", c->realtime_factor},
+          {"work", c->work},
+          {"reference", c->reference},
+          {"summary", describe(*c)}};
+}
+
+int recommendCommand(const RecommendOptions& o) {
+  const Cost cost = o.cost == "work" ? Cost::Work : Cost::WallTime;
+  std::optional<EngineRegistry> registry = makeRegistry(o.engines_files);
+  if (!registry) return kBadInput;
+  std::string table = o.target;
+  if (fs::path(o.target).extension() != ".csv") {
+    // A sweep spec has "scenes"; anything else is read as a scene.
+    auto root = mysim::readJsonFile(o.target, "sweep spec or scene");
+    if (!root) {
+      std::cerr << "error: " << root.error() << '\n';
+      return kBadInput;
+    }
+    std::expected<SweepSpec, std::string> spec = std::unexpected("");
+    if (root->is_object() && root->contains("scenes")) {
+      spec = loadSweepSpec(o.target, *registry);
+    } else {
+      auto scene = registry->loadScene(o.target);
+      if (!scene) {
+        std::cerr << "error: " << scene.error() << '\n';
+        return kBadInput;
+      }
+      spec = parseSweepSpec(sweepAroundScene(*registry, o.target, *scene), o.target, *registry);
+    }
+    if (!spec) {
+      std::cerr << "error: " << spec.error() << '\n';
+      return kBadInput;
+    }
+    table = o.table_out.empty() ? "out/recommend/" + spec->name + ".csv" : o.table_out;
+    std::error_code ec;
+    fs::create_directories(fs::path(table).parent_path(), ec);
+    SweepOptions options;
+    options.jobs = o.jobs > 0 ? o.jobs : mysim::availableCores();
+    options.repeats = o.timing.repeats;
+    options.threads = o.timing.threads;
+    options.fixed_threads = o.timing.fixed_threads;
+    options.resume = false;
+    auto progress = std::make_shared<Progress>("recommend " + spec->name, isatty(STDERR_FILENO));
+    options.progress = [progress](int done, int total) { progress->update(done, total); };
+    if (auto ran = runSweep(*registry, *spec, table, options); !ran) {
+      std::cerr << "error: " << ran.error() << '\n';
+      return kFailure;
+    }
+  }
+  auto rows = readSweepTable(table);
+  if (!rows) {
+    std::cerr << "error: " << rows.error() << '\n';
+    return kBadInput;
+  }
+  const std::vector<Recommendation> found = recommend(*rows, o.max_error, cost);
+  if (found.empty()) {
+    std::cerr << "error: " << table << ": no rows to recommend from\n";
+    return kBadInput;
+  }
+  json out = {{"table", table},
+              {"max_error", o.max_error},
+              {"cost", cost == Cost::Work ? "work" : "wall_seconds"},
+              {"recommendations", json::array()}};
+  bool all_met = true;
+  for (const Recommendation& r : found) {
+    std::cout << r.scene << " (stiffness x" << r.stiffness_scale << "), error <= " << r.max_error
+              << " m, cheapest by " << (cost == Cost::Work ? "work" : "wall time") << ":\n";
+    if (r.best) {
+      std::cout << "  best:      " << describe(*r.best) << '\n';
+      std::cout << "  runner-up: " << (r.runner_up ? describe(*r.runner_up) : "none") << '\n';
+    } else {
+      all_met = false;
+      std::cout << "  none of the " << r.candidates << " finished runs stays under " << r.max_error
+                << " m\n";
+    }
+    std::cout << "  (" << r.meeting << " of " << r.candidates << " finished runs meet the bound; "
+              << "error against " << (r.best ? r.best->reference : "the sweep's reference")
+              << ")\n";
+    // Speed at equal accuracy: every engine's own best, and mysim's best realtime factor over
+    // the best Bullet engine's.
+    json per_engine = json::array();
+    double mysim_best = 0.0, bullet_best = 0.0;
+    if (!r.per_engine.empty()) std::cout << "  each engine's cheapest under the bound:\n";
+    for (const Choice& c : r.per_engine) {
+      std::cout << "    " << describe(c) << '\n';
+      per_engine.push_back(choiceJson(c));
+      const Engine* engine = registry->find(c.engine);
+      const std::string kind = engine ? engine->kind : "";
+      if (kind == "mysim") mysim_best = std::max(mysim_best, c.realtime_factor);
+      if (kind == "bullet") bullet_best = std::max(bullet_best, c.realtime_factor);
+    }
+    json ratio = nullptr;
+    if (mysim_best > 0 && bullet_best > 0) {
+      ratio = mysim_best / bullet_best;
+      std::cout << "  mysim's best runs " << ratio.get<double>()
+                << "x the realtime factor of Bullet's best at this accuracy\n";
+    }
+    out["recommendations"].push_back({{"scene", r.scene},
+                                      {"stiffness_scale", r.stiffness_scale},
+                                      {"candidates", r.candidates},
+                                      {"meeting", r.meeting},
+                                      {"best", choiceJson(r.best)},
+                                      {"runner_up", choiceJson(r.runner_up)},
+                                      {"per_engine", per_engine},
+                                      {"mysim_over_bullet_realtime", ratio}});
+  }
+  if (!o.json_out.empty()) {
+    if (auto written = writeFileAtomically(
+            o.json_out, [&](std::ostream& file) { file << out.dump(2) << '\n'; });
+        !written) {
+      std::cerr << "error: " << written.error() << '\n';
+      return kFailure;
+    }
+  }
+  return all_met ? kOk : kFailure;
+}
+
+}  // namespace
+
+void addRecommendCommand(CLI::App& app, int& exit_code) {
+  auto o = std::make_shared<RecommendOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "recommend",
+      "The cheapest engine, integrator and step whose error stays under --max-error, and the "
+      "runner-up (exit 1 if none does)");
+  cmd->add_option("target", o->target,
+                  "A sweep table (.csv), a sweep spec (run first) or a scene (a sweep of every "
+                  "engine around its step is run first)")
+      ->required();
+  cmd->add_option("--max-error", o->max_error,
+                  "Largest acceptable error, m (the sweep's error column: max over frames of the "
+                  "RMS node distance to its reference)")
+      ->required()
+      ->check(kPositive);
+  cmd->add_option("--cost", o->cost,
+                  "What cheapest means: wall (wall time, the fastest of the timing rounds) or "
+                  "work (derivative evaluations + iterations, the same on any machine)")
+      ->check(CLI::IsMember({"wall", "work"}))
+      ->capture_default_str();
+  cmd->add_option("--json", o->json_out, "Also write the answer as JSON here");
+  cmd->add_option("--table", o->table_out,
+                  "Where a sweep it runs writes its table (default out/recommend/NAME.csv)");
+  cmd->add_option("--jobs", o->jobs, "Parallel runs of a sweep it runs (default: all cores)");
+  addEnginesFileOption(cmd, o->engines_files);
+  addTimingOptions(cmd, o->timing, 3);
+  cmd->callback([o, &exit_code] { exit_code = recommendCommand(*o); });
+}
+
+}  // namespace springcheck

@@ -1,0 +1,186 @@
+#include "compare/engines/engine_registry.h"
+
+#include <algorithm>
+
+#include "engines.h"
+#include "mysim/run_limits.h"
+#include "mysim/scene_file.h"
+
+namespace springcheck {
+
+RunConfig runConfig(const mysim::Scene& scene) {
+  return {scene.source,     scene.name,
+          scene.integrator, {scene.dt, scene.duration, scene.sample_interval},
+          scene.limits,     scene.engine_settings};
+}
+
+EngineRegistry::EngineRegistry() {
+  // The built-in rows. Adding an engine: its file in engines/ and a row here.
+  engines_.push_back(mysimEngine());
+  for (reference::BulletEngine e : reference::kBulletEngines) engines_.push_back(bulletEngine(e));
+  sections_.push_back(reference::bulletSceneSection());
+}
+
+std::expected<void, std::string> EngineRegistry::add(Engine engine) {
+  if (find(engine.name)) return std::unexpected("engine '" + engine.name + "' exists already");
+  engines_.push_back(std::move(engine));
+  return {};
+}
+
+std::expected<void, std::string> EngineRegistry::addEnginesFile(const std::string& path) {
+  auto specs = loadEnginesFile(path);
+  if (!specs) return std::unexpected(specs.error());
+  std::vector<Engine> added;
+  for (std::size_t k = 0; k < specs->size(); ++k) {
+    const ExternalEngineSpec& spec = (*specs)[k];
+    if (find(spec.name)) {
+      return std::unexpected(path + ": engines[" + std::to_string(k) + "].name: '" + spec.name +
+                             "' is taken by another engine; choose another name");
+    }
+    added.push_back(externalEngine(spec));
+  }
+  for (Engine& e : added) engines_.push_back(std::move(e));
+  engines_files_.push_back(path);
+  return {};
+}
+
+std::vector<std::string> EngineRegistry::names() const {
+  std::vector<std::string> names;
+  for (const Engine& e : engines_) names.push_back(e.name);
+  return names;
+}
+
+const Engine* EngineRegistry::find(const std::string& name) const {
+  for (const Engine& e : engines_) {
+    if (e.name == name) return &e;
+  }
+  return nullptr;
+}
+
+std::expected<mysim::Scene, std::string> EngineRegistry::loadScene(const std::string& path) const {
+  return mysim::loadScene(path, sections_);
+}
+
+std::string engineList(const EngineRegistry& registry) {
+  std::string list;
+  for (const Engine& e : registry.engines()) {
+    list += (list.empty() ? "" : ", ") + e.name;
+    if (e.takes_integrator) list += ", " + e.name + ":INTEGRATOR";
+  }
+  return list;
+}
+
+std::expected<std::pair<const Engine*, RunConfig>, EngineError> EngineRegistry::resolve(
+    const std::string& spec, const RunConfig& config) const {
+  auto unknown = [&](const std::string& why) {
+    return std::unexpected(EngineError{EngineError::Kind::Unknown, why});
+  };
+  const std::size_t colon = spec.find(':');
+  const Engine* engine = find(spec.substr(0, colon));
+  if (!engine) {
+    return unknown(
+        "unknown engine '" + mysim::clip(spec, 40) + "'; expected one of " + engineList(*this) +
+        (engines_files_.empty() ? " (a user's own engine comes from --engines-file)" : ""));
+  }
+  RunConfig resolved = config;
+  if (colon != std::string::npos) {
+    if (!engine->takes_integrator) {
+      return unknown("engine '" + mysim::clip(spec, 40) + "': " + engine->name +
+                     " takes no integrator");
+    }
+    auto name = mysim::canonicalIntegratorName(spec.substr(colon + 1));
+    if (!name) return unknown("engine '" + mysim::clip(spec, 40) + "': " + name.error());
+    resolved.integrator.name = *name;
+  }
+  return std::pair{engine, std::move(resolved)};
+}
+
+namespace {
+
+// The limits every run is held to, whatever set its step and duration.
+std::optional<EngineError> limitError(const mysim::Model& model, const RunConfig& config) {
+  const double particles = model.isCircle() ? 1 : model.particleCount();
+  auto error = mysim::checkRunLimits(particles, model.springs.size(), config.run);
+  if (!error) return std::nullopt;
+  return EngineError{EngineError::Kind::Invalid,
+                     config.source + ": " + error->field + ": " + error->message};
+}
+
+}  // namespace
+
+std::expected<void, std::string> EngineRegistry::check(const std::string& spec) const {
+  auto resolved = resolve(spec, RunConfig{});
+  if (!resolved) return std::unexpected(resolved.error().message);
+  return {};
+}
+
+std::expected<EngineInstance, EngineError> EngineRegistry::build(const std::string& spec,
+                                                                 const mysim::Model& model,
+                                                                 const RunConfig& config) const {
+  auto resolved = resolve(spec, config);
+  if (!resolved) return std::unexpected(resolved.error());
+  if (auto limit = limitError(model, config)) return std::unexpected(*limit);
+  return resolved->first->build(model, resolved->second);
+}
+
+void applyTiming(const Timing& timing, RunConfig& config) {
+  config.repeats = timing.repeats;
+  config.run.threads = timing.threads;
+  config.run.follow_load = !timing.fixed_threads;
+}
+
+std::expected<mysim::RunRecord, EngineError> EngineRegistry::run(const std::string& spec,
+                                                                 const mysim::Model& model,
+                                                                 const RunConfig& config) const {
+  auto resolved = resolve(spec, config);
+  if (!resolved) return std::unexpected(resolved.error());
+  if (auto limit = limitError(model, config)) return std::unexpected(*limit);
+  const auto& [engine, resolved_config] = *resolved;
+  auto once = [&]() -> std::expected<mysim::RunRecord, EngineError> {
+    if (engine->run) return engine->run(model, resolved_config);
+    auto instance = engine->build(model, resolved_config);
+    if (!instance) return std::unexpected(instance.error());
+    mysim::RunRecord r = mysim::simulate(*instance->system, *instance->stepper, instance->start,
+                                         resolved_config.run);
+    r.integrator = instance->integrator;
+    r.notes = instance->notes;
+    return r;
+  };
+  auto record = once();
+  if (!record) return record;
+  record->engine = spec;
+  // Repeats time the same run again; a run that differs from the first (it must not) fails.
+  std::vector<double> walls{record->wall_seconds};
+  for (int k = 1; k < config.repeats; ++k) {
+    auto again = once();
+    if (!again) return std::unexpected(again.error());
+    if (again->steps != record->steps || again->frames.size() != record->frames.size() ||
+        (!again->frames.empty() && again->frames.back() != record->frames.back())) {
+      return std::unexpected(EngineError{
+          EngineError::Kind::Failed,
+          spec + ": repeat " + std::to_string(k + 1) +
+              " of the run gave another result than the "
+              "first: the engine is not deterministic, so its timing cannot be repeated"});
+    }
+    walls.push_back(again->wall_seconds);
+    record->threads = std::max(record->threads, again->threads);
+  }
+  record->repeats = static_cast<int>(walls.size());
+  const RepeatTimes times = repeatTimes(std::move(walls));
+  record->wall_seconds = times.fastest;
+  record->wall_median_seconds = times.median;
+  return record;
+}
+
+RepeatTimes repeatTimes(std::vector<double> walls) {
+  std::sort(walls.begin(), walls.end());
+  const std::size_t half = walls.size() / 2;
+  return {walls.front(), walls.size() % 2 ? walls[half] : 0.5 * (walls[half - 1] + walls[half])};
+}
+
+std::expected<mysim::RunRecord, EngineError> EngineRegistry::run(const std::string& spec,
+                                                                 const mysim::Scene& scene) const {
+  return run(spec, mysim::buildModel(scene), runConfig(scene));
+}
+
+}  // namespace springcheck

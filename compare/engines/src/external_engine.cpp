@@ -1,0 +1,210 @@
+// A user's simulator as an engine: model file out, program run under a time limit, states back,
+// checked, and replayed through mysim's run loop so every metric is computed by springcheck.
+#include "compare/engines/external_engine.h"
+
+#include <cstdlib>
+#include <filesystem>
+
+#include "engines.h"
+#include "mysim/circle_system.h"
+#include "process.h"
+
+namespace springcheck {
+
+namespace {
+namespace fs = std::filesystem;
+
+EngineError failed(const std::string& message) {
+  return EngineError{EngineError::Kind::Failed, message};
+}
+
+// A private folder for one run, removed with everything in it when the run is over.
+class ScratchDir {
+ public:
+  explicit ScratchDir(const std::string& engine) {
+    std::string pattern = (fs::temp_directory_path() / ("springcheck-" + engine + "-XXXXXX"));
+    if (mkdtemp(pattern.data())) path_ = pattern;
+  }
+  ~ScratchDir() {
+    std::error_code ec;
+    if (!path_.empty()) fs::remove_all(path_, ec);
+  }
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+std::string number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", v);
+  return text;
+}
+
+// Replays an engine's frames through the run loop: at each step a frame was asked for, the state
+// becomes that frame; between frames only the time moves (those states are never recorded).
+// Frames that run out (a declared blow-up) leave a non-finite state, which the run loop reports.
+class ReplayStepper final : public mysim::Stepper {
+ public:
+  ReplayStepper(ExternalResult result, FramePlan plan, bool circle)
+      : result_(std::move(result)), plan_(std::move(plan)), circle_(circle) {}
+
+  mysim::StepCounts step(mysim::State& state, double h) override {
+    ++step_;
+    state.t += h;
+    while (next_ < result_.frames.size() && plan_.steps[next_] < step_) ++next_;
+    if (next_ >= result_.frames.size()) {
+      state.y.setConstant(std::numeric_limits<double>::quiet_NaN());
+    } else if (plan_.steps[next_] == step_) {
+      setState(result_.frames[next_], state);
+      state.t = result_.times[next_];
+    }
+    return {.accepted = 1};
+  }
+
+  void setState(const mysim::ParticleRows& rows, mysim::State& state) const {
+    if (circle_) {
+      state.y = rows.block<1, 2>(mysim::kCircleTwinParticle, 0).transpose();
+      return;
+    }
+    const int n = static_cast<int>(rows.rows());
+    state.y.resize(6 * n);
+    for (int p = 0; p < n; ++p) {
+      state.y.segment<3>(3 * p) = rows.block<1, 3>(p, 0).transpose();
+      state.y.segment<3>(3 * n + 3 * p) = rows.block<1, 3>(p, 3).transpose();
+    }
+  }
+  const ExternalResult& result() const { return result_; }
+
+ private:
+  ExternalResult result_;
+  FramePlan plan_;
+  bool circle_;
+  long step_ = 0;
+  std::size_t next_ = 0;
+};
+
+struct Execution {
+  ExternalResult result;
+  FramePlan plan;
+  double process_seconds = 0.0;
+};
+
+// Writes the model, runs the program, reads back and checks what it wrote.
+std::expected<Execution, EngineError> execute(const ExternalEngineSpec& spec,
+                                              const mysim::Model& model, const RunConfig& config,
+                                              bool every_step) {
+  const std::string who = "engine '" + spec.name + "'";
+  if (!(config.run.dt > 0) || !(config.run.duration >= config.run.dt)) {
+    return std::unexpected(failed(who + ": needs dt > 0 and a duration >= dt"));
+  }
+  ScratchDir scratch(spec.name);
+  if (scratch.path().empty()) {
+    return std::unexpected(
+        failed(who + ": cannot make a folder under " + fs::temp_directory_path().string()));
+  }
+  const std::string out = scratch.path() + "/out";
+  fs::create_directories(out);
+  // Driven models (wind, moving pins) need every step: the work they do is summed step by step.
+  Execution run;
+  run.plan = framePlan(config.run, every_step || model.wind || model.pin_motion);
+  if (auto written = writeModelFile(scratch.path(), model, config, run.plan); !written) {
+    return std::unexpected(failed(who + ": " + written.error()));
+  }
+  std::vector<std::string> argv;
+  for (std::string arg : spec.command) {
+    const std::pair<const char*, std::string> values[] = {
+        {"{model}", scratch.path() + "/model.json"},
+        {"{out}", out},
+        {"{dir}", spec.dir},
+        {"{python}", std::string(SPRINGCHECK_PYTHON).empty() ? "python3" : SPRINGCHECK_PYTHON},
+        {"{dt}", number(config.run.dt)},
+        {"{duration}", number(config.run.duration)},
+        {"{integrator}", config.integrator.name},
+        {"{scene}", config.scene_name}};
+    for (const auto& [key, value] : values) {
+      for (std::size_t at; (at = arg.find(key)) != std::string::npos;) {
+        arg.replace(at, std::string(key).size(), value);
+      }
+    }
+    argv.push_back(arg);
+  }
+  // A relative program path is the engines file's, not the working folder's.
+  if (argv[0].find('/') != std::string::npos && fs::path(argv[0]).is_relative()) {
+    argv[0] = (fs::path(spec.dir) / argv[0]).lexically_normal().string();
+  }
+  const std::string log = scratch.path() + "/engine.log";
+  const ProcessResult p = runProcess(argv, log, spec.time_limit);
+  run.process_seconds = p.wall_seconds;
+  if (!p.started) return std::unexpected(failed(who + ": " + p.error));
+  if (p.timed_out) {
+    return std::unexpected(failed(who + ": killed at its time limit of " + number(spec.time_limit) +
+                                  " s (time_limit in " + spec.source +
+                                  "); it said last:" + lastLines(log, 5)));
+  }
+  if (p.signal != 0) {
+    return std::unexpected(failed(who + ": ended by signal " + std::to_string(p.signal) +
+                                  "; it said last:" + lastLines(log, 5)));
+  }
+  if (p.exit_code != 0) {
+    return std::unexpected(failed(who + ": exited with code " + std::to_string(p.exit_code) +
+                                  "; it said last:" + lastLines(log, 5)));
+  }
+  const int particles = model.isCircle() ? 2 : model.particleCount();
+  auto result = readExternalResult(spec.name, out, particles, run.plan, config.run.dt);
+  if (!result) return std::unexpected(failed(result.error()));
+  run.result = std::move(*result);
+  return run;
+}
+
+}  // namespace
+
+Engine externalEngine(const ExternalEngineSpec& spec) {
+  Engine e;
+  e.name = spec.name;
+  e.kind = "external";
+  e.description =
+      (spec.description.empty() ? "a user's engine" : spec.description) + " (" + spec.source + ")";
+  e.run = [spec](const mysim::Model& model,
+                 const RunConfig& config) -> std::expected<mysim::RunRecord, EngineError> {
+    auto run = execute(spec, model, config, false);
+    if (!run) return std::unexpected(run.error());
+    const std::optional<double> blowup = run->result.blowup_time;
+    const std::string reason = run->result.blowup_reason;
+    const std::optional<double> own_seconds = run->result.wall_seconds;
+    const std::optional<long> evaluations = run->result.derivative_evaluations;
+    auto system = mysim::makeSystem(model, config.limits);
+    ReplayStepper replay(std::move(run->result), run->plan, model.isCircle());
+    mysim::RunRecord record = mysim::simulate(*system, replay, system->initialState(), config.run);
+    record.integrator = spec.name;
+    // The engine's own stepping time if it reported one, else the whole process's.
+    record.wall_seconds = own_seconds.value_or(run->process_seconds);
+    if (!own_seconds) record.notes.push_back("wall time is the whole process's (no summary.json)");
+    if (evaluations) record.counts.derivative_evaluations = *evaluations;
+    if (record.blowup && blowup && record.blowup->check == "non-finite") {
+      record.blowup->check = "engine";
+      record.blowup->detail = "the engine reported a blow-up at t = " + number(*blowup) + " s" +
+                              (reason.empty() ? "" : ": " + reason);
+    }
+    return record;
+  };
+  e.build = [spec](const mysim::Model& model,
+                   const RunConfig& config) -> std::expected<EngineInstance, EngineError> {
+    // Interactive use: the whole run at every step, then played back step by step.
+    auto run = execute(spec, model, config, true);
+    if (!run) return std::unexpected(run.error());
+    EngineInstance instance;
+    instance.system = mysim::makeSystem(model, config.limits);
+    instance.start = instance.system->initialState();
+    instance.stepper =
+        std::make_unique<ReplayStepper>(std::move(run->result), run->plan, model.isCircle());
+    instance.integrator = spec.name;
+    instance.notes.push_back("played back from a run of the whole duration");
+    return instance;
+  };
+  return e;
+}
+
+}  // namespace springcheck

@@ -1,0 +1,130 @@
+// The model file an external engine reads (docs/external-engines.md).
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "compare/engines/external_engine.h"
+#include "compare/io/atomic_file.h"
+#include "compare/io/npy.h"
+#include "mysim/circle_system.h"
+#include "mysim/wind.h"
+
+namespace springcheck {
+
+namespace {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+json vec3(const mysim::Vec3& v) { return json::array({v.x(), v.y(), v.z()}); }
+
+json rows3(const mysim::Vector& flat) {
+  json rows = json::array();
+  for (int p = 0; p < flat.size() / 3; ++p) rows.push_back(vec3(mysim::at3(flat, p)));
+  return rows;
+}
+
+}  // namespace
+
+FramePlan framePlan(const mysim::RunSettings& settings, bool every_step) {
+  const long steps = mysim::stepCount(settings);
+  const long stride = every_step ? 1 : mysim::sampleStride(settings);
+  FramePlan plan{{0}, {0.0}};
+  double t = 0.0;
+  for (long step = 1; step <= steps; ++step) {
+    t += settings.dt;
+    if (step % stride == 0 || step == steps) {
+      plan.steps.push_back(step);
+      plan.times.push_back(t);
+    }
+  }
+  return plan;
+}
+
+std::expected<void, std::string> writeModelFile(const std::string& dir, const mysim::Model& given,
+                                                const RunConfig& config, const FramePlan& frames) {
+  const mysim::Model model = given.isCircle() ? mysim::circleTwin(given) : given;
+  const int n = model.particleCount();
+  json particles = {{"count", n},
+                    {"position", rows3(model.start_position)},
+                    {"velocity", rows3(model.start_velocity)},
+                    {"mass", std::vector<double>(model.mass.data(), model.mass.data() + n)},
+                    {"pinned", json::array()}};
+  for (char pinned : model.pinned) particles["pinned"].push_back(pinned != 0);
+  json springs = {{"count", model.springs.size()}};
+  for (const char* key : {"i", "j", "rest_length", "stiffness", "damping", "family"}) {
+    springs[key] = json::array();
+  }
+  for (const mysim::Spring& s : model.springs) {
+    springs["i"].push_back(s.i);
+    springs["j"].push_back(s.j);
+    springs["rest_length"].push_back(s.rest_length);
+    springs["stiffness"].push_back(s.stiffness);
+    springs["damping"].push_back(s.damping);
+    springs["family"].push_back(mysim::familyName(s.family));
+  }
+  const long steps = mysim::stepCount(config.run);
+  json j = {{"format", "springcheck-model"},
+            {"version", 1},
+            {"units", "SI: m, kg, s, N"},
+            {"scene", config.scene_name},
+            {"source", config.source},
+            {"system", given.isCircle() ? "circle (as its mechanical twin)"
+                                        : mysim::systemKindName(given.kind)},
+            {"particles", particles},
+            {"springs", springs},
+            {"gravity", vec3(model.gravity)},
+            {"drag", model.drag},
+            {"wind", nullptr},
+            {"pin_motion", nullptr},
+            {"sphere", nullptr},
+            {"integrator",
+             {{"name", config.integrator.name},
+              {"abs_tolerance", config.integrator.abs_tolerance},
+              {"rel_tolerance", config.integrator.rel_tolerance},
+              {"cg_tolerance", config.integrator.cg_tolerance},
+              {"cg_max_iterations", config.integrator.cg_max_iterations},
+              {"cg_preconditioner", mysim::preconditionerName(config.integrator.preconditioner)}}},
+            {"dt", config.run.dt},
+            {"duration", config.run.duration},
+            {"steps", steps},
+            {"frame_steps", frames.steps},
+            {"frame_times", frames.times}};
+  if (model.pin_motion) {
+    j["pin_motion"] = {{"axis", vec3(model.pin_motion->axis)},
+                       {"amplitude", model.pin_motion->amplitude},
+                       {"frequency", model.pin_motion->frequency}};
+  }
+  if (model.sphere) {
+    j["sphere"] = {{"center", vec3(model.sphere->center)},
+                   {"radius", model.sphere->radius},
+                   {"margin", model.sphere->margin}};
+  }
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (model.wind) {
+    const mysim::Wind& w = *model.wind;
+    // The force on particle p in gust window floor(t / gust_period) is
+    // table[window, p] * direction: the same hash mysim evaluates, tabulated.
+    const long windows = static_cast<long>(std::floor(config.run.duration / w.gust_period)) + 2;
+    j["wind"] = {{"direction", vec3(w.direction)}, {"strength", w.strength}, {"gust", w.gust},
+                 {"gust_period", w.gust_period},   {"coverage", w.coverage}, {"seed", w.seed},
+                 {"force_table", "wind.npy"},      {"windows", windows}};
+    std::vector<double> table(static_cast<std::size_t>(windows) * n);
+    for (long k = 0; k < windows; ++k) {
+      // The middle of the window, so no rounding of k * period can land in the next one.
+      const double t = (static_cast<double>(k) + 0.5) * w.gust_period;
+      for (int p = 0; p < n; ++p) {
+        table[k * n + p] = model.pinned[p] ? 0.0 : mysim::windForce(w, p, t).dot(w.direction);
+      }
+    }
+    if (auto written = writeNpy((fs::path(dir) / "wind.npy").string(), {windows, n}, table);
+        !written) {
+      return written;
+    }
+  }
+  return writeFileAtomically((fs::path(dir) / "model.json").string(),
+                             [&](std::ostream& out) { out << j.dump(1) << '\n'; });
+}
+
+}  // namespace springcheck

@@ -1,0 +1,39 @@
+// mysim: our simulator, stepped by the integrator the run names ("mysim:verlet" picks one).
+#include "engines.h"
+
+namespace springcheck {
+
+Engine mysimEngine() {
+  Engine e;
+  e.name = "mysim";
+  e.kind = "mysim";
+  e.description = "springcheck's own simulator; mysim:INTEGRATOR picks the integrator";
+  e.takes_integrator = true;
+  e.build = [](const mysim::Model& model,
+               const RunConfig& config) -> std::expected<EngineInstance, EngineError> {
+    const mysim::IntegratorInfo* info = mysim::findIntegrator(config.integrator.name);
+    if (!info) {
+      return std::unexpected(
+          EngineError{EngineError::Kind::Unknown,
+                      config.source + ": integrator.name: " +
+                          mysim::canonicalIntegratorName(config.integrator.name).error()});
+    }
+    if (info->needs_particles && model.isCircle()) {
+      return std::unexpected(
+          EngineError{EngineError::Kind::Refused,
+                      config.source + ": mysim: integrator.name: '" + info->name +
+                          "' needs a particle system; the circle is a first-order ODE (use "
+                          "euler, trapezoidal, rk4 or dopri5)"});
+    }
+    EngineInstance instance;
+    instance.system = mysim::makeSystem(model, config.limits);
+    instance.stepper =
+        std::make_unique<mysim::IntegratorStepper>(*instance.system, info->make(config.integrator));
+    instance.start = instance.system->initialState();
+    instance.integrator = info->name;
+    return instance;
+  };
+  return e;
+}
+
+}  // namespace springcheck

@@ -1,0 +1,225 @@
+#include "compare/io/report_manifest.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include "compare/io/csv.h"
+
+namespace springcheck {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+// The engines the main job compares on its energy scenes (scripts/run-suite.sh).
+constexpr const char* kEnergyEngines =
+    "mysim:euler,mysim:trapezoidal,mysim:rk4,mysim:symplectic-euler,mysim:verlet,"
+    "mysim:backward-euler,mysim:dopri5,bullet-deformable,bullet-implicit,bullet-classic";
+
+std::vector<fs::path> filesIn(const fs::path& dir, const std::string& prefix,
+                              const std::string& extension) {
+  std::vector<fs::path> files;
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(dir, error)) {
+    const std::string name = entry.path().filename().string();
+    if (entry.is_regular_file() && entry.path().extension() == extension &&
+        name.starts_with(prefix)) {
+      files.push_back(entry.path());
+    }
+  }
+  std::ranges::sort(files);
+  return files;
+}
+
+std::string machine() {
+  char host[256] = "unknown";
+  gethostname(host, sizeof host - 1);
+  std::string cpu = "unknown CPU";
+  std::ifstream info("/proc/cpuinfo");
+  for (std::string line; std::getline(info, line);) {
+    if (line.starts_with("model name")) {
+      cpu = line.substr(line.find(':') + 2);
+      break;
+    }
+  }
+  return std::string(host) + ", " + cpu + ", " +
+         std::to_string(std::thread::hardware_concurrency()) + " cores";
+}
+
+std::string utcNow() {
+  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%d %H:%M UTC", &utc);
+  return text;
+}
+
+// The first data row's value of `column` in a CSV table ("" when absent): enough to tell a
+// self-consistency sweep from one against a shared reference.
+std::string firstValue(const fs::path& table, const std::string& column) {
+  std::ifstream in(table);
+  std::string header, row;
+  if (!std::getline(in, header) || !std::getline(in, row)) return "";
+  const auto names = parseCsvLine(header), values = parseCsvLine(row);
+  if (!names || !values) return "";
+  for (std::size_t i = 0; i < names->size() && i < values->size(); ++i) {
+    if ((*names)[i] == column) return (*values)[i];
+  }
+  return "";
+}
+
+// Every folder under `results` holding a comparison.json (suite/SCENE, energy/SCENE,
+// compare/SCENE, ...), with its group (the folder above it).
+std::expected<json, std::string> comparisons(const fs::path& results) {
+  std::vector<fs::path> found;
+  std::error_code error;
+  for (auto it = fs::recursive_directory_iterator(results, error);
+       !error && it != fs::recursive_directory_iterator(); it.increment(error)) {
+    if (it.depth() > 3) it.disable_recursion_pending();
+    if (it->path().filename() == "comparison.json") found.push_back(it->path().parent_path());
+  }
+  std::ranges::sort(found);
+  json list = json::array();
+  for (const fs::path& dir : found) {
+    std::ifstream in(dir / "comparison.json");
+    json c = json::parse(in, nullptr, false);
+    if (c.is_discarded() || !c.contains("scene") || !c.contains("engines")) {
+      return std::unexpected((dir / "comparison.json").string() +
+                             ": not a comparison written by springcheck compare or suite");
+    }
+    json entry = {{"group", fs::relative(dir.parent_path(), results).string()},
+                  {"scene", c["scene"]},
+                  {"scene_file", c.value("scene_file", "")},
+                  {"folder", dir.string()},
+                  {"model", c.value("model", json::object())},
+                  {"refused", c.value("refused", json::array())},
+                  {"failed", c.value("failed", json::array())},
+                  {"engines", json::array()}};
+    for (const char* table : {"series", "engine_metrics", "pair_metrics", "node_distance"}) {
+      const fs::path path = dir / (std::string(table) + ".csv");
+      entry[table] = fs::exists(path) ? json(path.string()) : json();
+    }
+    for (const json& e : c["engines"]) {
+      const fs::path run = dir / e.value("folder", e.value("engine", ""));
+      json engine = {{"name", e.value("engine", "")},
+                     {"integrator", e.value("integrator", "")},
+                     {"status", e.value("status", "")},
+                     {"folder", run.string()}};
+      for (const char* file : {"final_state.csv", "final.obj", "energy.csv"}) {
+        engine[std::string(file).substr(0, std::string(file).find('.'))] =
+            fs::exists(run / file) ? json((run / file).string()) : json();
+      }
+      entry["engines"].push_back(engine);
+    }
+    list.push_back(entry);
+  }
+  return list;
+}
+
+}  // namespace
+
+std::expected<json, std::string> reportManifest(const std::string& results_dir,
+                                                const ReportStamp& stamp) {
+  const fs::path results(results_dir);
+  const std::string r = results_dir, d = stamp.data_dir;
+  json m = {{"stamp",
+             {{"version", stamp.version},
+              {"commit", stamp.commit},
+              {"command", stamp.command},
+              {"date", utcNow()},
+              {"machine", machine()}}},
+            {"results", r},
+            {"missing", json::array()}};
+  auto missing = [&](const std::string& input, const std::string& command,
+                     const std::string& pages) {
+    m["missing"].push_back({{"input", input}, {"command", command}, {"pages", pages}});
+  };
+
+  const fs::path gate = results / "gate.json";
+  m["gate"] = fs::exists(gate) ? json(gate.string()) : json();
+  if (!fs::exists(gate)) {
+    missing(gate.string(), "springcheck gate --json " + gate.string(),
+            "the dashboard's gate table");
+  }
+
+  m["sweeps"] = json::array();
+  m["recommendations"] = json::array();
+  for (const fs::path& table : filesIn(results / "sweep", "", ".csv")) {
+    const std::string name = table.stem().string();
+    const bool self = firstValue(table, "reference").starts_with("self");
+    m["sweeps"].push_back({{"name", name}, {"path", table.string()}, {"self_reference", self}});
+    const fs::path rec = results / "recommend" / (name + ".json");
+    if (fs::exists(rec)) {
+      m["recommendations"].push_back({{"sweep", name}, {"path", rec.string()}});
+    } else if (!self) {
+      missing(
+          rec.string(),
+          "springcheck recommend " + table.string() + " --max-error 1e-3 --json " + rec.string(),
+          "the dashboard's recommendation");
+    }
+  }
+  if (m["sweeps"].empty()) {
+    for (const char* spec :
+         {"chain_convergence", "cloth_speed_accuracy", "chain_self_consistency"}) {
+      const std::string table = r + "/sweep/" + spec + ".csv";
+      missing(table, "springcheck sweep " + d + "/compare/sweeps/" + spec + ".json --out " + table,
+              "speed and accuracy, convergence, the recommendation");
+    }
+  }
+
+  const fs::path stability = results / "stability";
+  for (const char* table : {"stability", "extremes"}) {
+    const fs::path path = stability / (std::string(table) + ".csv");
+    m["stability"][table] = fs::exists(path) ? json(path.string()) : json();
+  }
+  if (m["stability"]["stability"].is_null() || m["stability"]["extremes"].is_null()) {
+    missing((stability / "stability.csv").string(),
+            "springcheck stability --extremes --out " + stability.string(),
+            "stability of the integrators on the oscillator, the extremes");
+  }
+  m["stability"]["scenes"] = json::array();
+  for (const fs::path& table : filesIn(stability, "stability_", ".csv")) {
+    m["stability"]["scenes"].push_back(
+        {{"scene", table.stem().string().substr(std::string("stability_").size())},
+         {"path", table.string()}});
+  }
+  if (m["stability"]["scenes"].empty()) {
+    missing((stability / "stability_chain_swing.csv").string(),
+            "springcheck stability --scene " + d + "/scenes/matched/chain_swing.json --out " +
+                stability.string(),
+            "every engine's stability map");
+  }
+
+  auto found = comparisons(results);
+  if (!found) return std::unexpected(found.error());
+  m["comparisons"] = std::move(*found);
+  auto any_in = [&](const std::string& group) {
+    return std::ranges::any_of(m["comparisons"],
+                               [&](const json& c) { return c["group"] == group; });
+  };
+  if (!any_in("suite")) {
+    missing(r + "/suite", "springcheck suite " + d + "/scenes --out " + r + "/suite",
+            "drapes, sag and penetration, the largest disagreement");
+  }
+  if (!any_in("energy")) {
+    for (const char* scene : {"chain_swing", "chain_hanging"}) {
+      const std::string folder = r + "/energy/" + scene;
+      missing(folder,
+              "springcheck compare " + d + "/scenes/matched/" + scene + ".json --engines " +
+                  kEnergyEngines + " --out " + folder,
+              "energy of every integrator and engine");
+    }
+  }
+  const fs::path bench = results / "bench" / "bench.json";
+  m["bench"] = fs::exists(bench) ? json(bench.string()) : json();
+  return m;
+}
+
+}  // namespace springcheck

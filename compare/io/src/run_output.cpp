@@ -1,0 +1,138 @@
+#include "compare/io/run_output.h"
+
+#include <sys/resource.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <nlohmann/json.hpp>
+
+#include "compare/io/atomic_file.h"
+#include "compare/io/npy.h"
+#include "mysim/cloth_mesh.h"
+#include "mysim/state_hash.h"
+
+namespace springcheck {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+// The process's own high-water mark of resident memory (getrusage), bytes.
+long peakResidentBytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss * 1024L;
+}
+
+json energyJson(const mysim::EnergyTerms& e) {
+  return {
+      {"kinetic", e.kinetic}, {"gravity", e.gravity}, {"spring", e.spring}, {"total", e.total()}};
+}
+
+json summaryJson(const mysim::Scene& scene, const mysim::RunRecord& r) {
+  json s = {{"scene", scene.name},
+            {"scene_file", scene.source},
+            {"system", mysim::systemKindName(scene.kind)},
+            {"engine", r.engine},
+            {"integrator", r.integrator},
+            {"dt", r.dt},
+            {"duration", r.duration},
+            {"steps", r.steps},
+            {"time_reached", r.times.empty() ? 0.0 : r.times.back()},
+            {"wall_seconds", r.wall_seconds},
+            {"wall_median_seconds", r.wall_median_seconds},
+            {"repeats", r.repeats},
+            {"threads", r.threads},
+            {"realtime_factor", r.realtimeFactor()},
+            {"accepted_steps", r.counts.accepted},
+            {"rejected_steps", r.counts.rejected},
+            {"derivative_evaluations", r.counts.derivative_evaluations},
+            {"linear_iterations", r.counts.linear_iterations},
+            {"solver_failures", r.counts.solver_failures},
+            {"particles", r.frames.empty() ? 0 : r.frames.front().rows()},
+            {"frames", r.frames.size()},
+            {"complete", !r.blowup.has_value()},
+            {"status", r.status()},
+            {"final_state_hash", r.frames.empty() ? "" : mysim::hashRows(r.frames.back())},
+            {"notes", r.notes},
+            {"peak_resident_bytes", peakResidentBytes()}};
+  s["energy_start"] = r.energies.empty() ? json() : energyJson(r.energies.front());
+  s["energy_end"] = r.energies.empty() ? json() : energyJson(r.energies.back());
+  if (r.blowup) {
+    s["blowup"] = {{"time", r.blowup->time},
+                   {"step", r.blowup->step},
+                   {"check", r.blowup->check},
+                   {"detail", r.blowup->detail}};
+  } else {
+    s["blowup"] = nullptr;
+  }
+  return s;
+}
+
+}  // namespace
+
+std::expected<void, std::string> writeRunOutputs(const std::string& dir_name,
+                                                 const mysim::Scene& scene,
+                                                 const mysim::RunRecord& r) {
+  const fs::path dir(dir_name);
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) return std::unexpected("cannot create " + dir.string() + ": " + ec.message());
+  if (r.frames.empty()) return std::unexpected("run recorded no frame");
+  // A summary from an earlier run must not stand beside this run's half-written files.
+  fs::remove(dir / "summary.json", ec);
+
+  const mysim::ParticleRows& last = r.frames.back();
+  auto in = [&](const char* name) { return (dir / name).string(); };
+  auto done = writeFileAtomically(in("final_state.csv"), [&](std::ostream& out) {
+    out.precision(17);
+    out << "particle,x,y,z,vx,vy,vz\n";
+    for (int i = 0; i < last.rows(); ++i) {
+      out << i;
+      for (int k = 0; k < 6; ++k) out << ',' << last(i, k);
+      out << '\n';
+    }
+  });
+  if (!done) return done;
+
+  const long frames = static_cast<long>(r.frames.size()), particles = last.rows();
+  done = writeNpy(in("trajectory.npy"), {frames, particles, 6}, [&](std::ostream& out) {
+    for (const mysim::ParticleRows& f : r.frames) {
+      // Frames are column-major (N x 6); the file wants each particle's six values together.
+      const Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor> rows = f;
+      out.write(reinterpret_cast<const char*>(rows.data()),
+                static_cast<std::streamsize>(rows.size() * sizeof(double)));
+    }
+  });
+  if (!done) return done;
+  done = writeNpy(in("times.npy"), {frames}, r.times);
+  if (!done) return done;
+
+  if (!r.energies.empty()) {
+    done = writeFileAtomically(in("energy.csv"), [&](std::ostream& out) {
+      out.precision(17);
+      out << "t,kinetic,gravity,spring,total,external_work\n";
+      for (std::size_t f = 0; f < r.energies.size(); ++f) {
+        const mysim::EnergyTerms& e = r.energies[f];
+        out << r.times[f] << ',' << e.kinetic << ',' << e.gravity << ',' << e.spring << ','
+            << e.total() << ',' << e.external_work << '\n';
+      }
+    });
+    if (!done) return done;
+  }
+
+  if (scene.kind == mysim::SystemKind::Cloth) {
+    mysim::Vector x(3 * particles);
+    for (int i = 0; i < particles; ++i) x.segment<3>(3 * i) = last.block<1, 3>(i, 0).transpose();
+    done = writeFileAtomically(in("final.obj"), [&](std::ostream& out) {
+      mysim::writeObj(out, {scene.cloth.rows, scene.cloth.cols}, x);
+    });
+    if (!done) return done;
+  }
+
+  return writeFileAtomically(
+      in("summary.json"), [&](std::ostream& out) { out << summaryJson(scene, r).dump(2) << '\n'; });
+}
+
+}  // namespace springcheck

@@ -1,0 +1,89 @@
+#pragma once
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "compare/metrics/closed_form.h"
+#include "compare/metrics/drape_metric.h"
+#include "compare/metrics/energy_metric.h"
+#include "compare/metrics/momentum_metric.h"
+#include "compare/metrics/surface_distance.h"
+#include "mysim/scene.h"
+#include "mysim/simulation.h"
+
+namespace springcheck {
+
+// One engine's run of a scene. `engine` is the spec it was run as: "mysim" (the scene's
+// integrator), "mysim:INTEGRATOR", or a Bullet engine name.
+struct EngineRun {
+  std::string engine;
+  mysim::RunRecord record;
+};
+
+// Every single-run metric of one engine on one scene.
+struct EngineMetrics {
+  std::string engine;
+  bool blew_up = false;  // the run stopped early (a blow-up or an adaptive step limit)
+  std::string status;    // RunRecord::status()
+  double blowup_time = 0.0;
+  double wall_seconds = 0.0;  // the fastest of `repeats` runs; threads: the most it used
+  double wall_median_seconds = 0.0;
+  double realtime_factor = 0.0;  // simulated s per wall s
+  int repeats = 1;
+  int threads = 1;
+  long steps = 0;
+  double sag_lowest = 0.0;                // m below the pins, last frame
+  std::optional<double> sag_free_middle;  // m, last frame
+  std::optional<ClosedFormError> closed_form;
+  double penetration_max = 0.0;         // m, deepest over all frames (0 without a sphere)
+  double penetration_mean_max = 0.0;    // m, largest per-frame mean depth
+  int penetration_count_max = 0;        // most nodes inside in any frame
+  EnergyDrift drift;                    // per frame
+  bool external_work = false;           // wind or driven pins: energy may rise on purpose
+  std::optional<double> settling_time;  // s
+  double max_strain = 0.0;
+  std::optional<MomentumDrift> momentum;  // where the model conserves momentum
+};
+
+// How far two engines' runs of the same scene are apart.
+struct PairMetrics {
+  std::string a, b;
+  NodeDistance drape;           // last frames, node i against node i
+  SurfaceDistance surface;      // last frames, topology-free
+  double sag_difference = 0.0;  // |sag_lowest(a) - sag_lowest(b)|, m
+  // Max over the frames both sampled of the per-frame RMS node distance.
+  std::optional<double> trajectory_rms_max;
+};
+
+// Max over frames and last frame of the RMS node distance between two runs, over the times both
+// sampled (nothing when they share none).
+struct TrajectoryDistance {
+  double max_rms = 0.0;
+  double last_rms = 0.0;
+};
+std::optional<TrajectoryDistance> trajectoryDistance(const mysim::RunRecord& a,
+                                                     const mysim::RunRecord& b);
+
+EngineMetrics engineMetrics(const mysim::Scene& scene, const mysim::Model& model,
+                            const EngineRun& run);
+PairMetrics pairMetrics(const mysim::Scene& scene, const mysim::Model& model, const EngineRun& a,
+                        const EngineRun& b);
+
+// The surface of a model's shape in a frame: grid triangles for a cloth, one degenerate
+// triangle per spring otherwise.
+Surface surfaceOf(const mysim::Model& model, const mysim::ParticleRows& frame);
+
+// Metrics by name, for tolerance files and tables.
+struct MetricInfo {
+  std::string name;
+  bool pair;  // a metric between two engines, else of one
+  std::string unit;
+  std::string description;
+};
+const std::vector<MetricInfo>& metricCatalog();
+const MetricInfo* findMetric(std::string_view name);
+std::optional<double> metricValue(const EngineMetrics& m, std::string_view name);
+std::optional<double> metricValue(const PairMetrics& m, std::string_view name);
+
+}  // namespace springcheck

@@ -1,0 +1,119 @@
+#include "compare/metrics/closed_form.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace springcheck {
+
+double ellipticK(double k) {
+  double a = 1.0, b = std::sqrt(1.0 - k * k);
+  while (std::abs(a - b) > 1e-15 * a) {
+    const double next = 0.5 * (a + b);
+    b = std::sqrt(a * b);
+    a = next;
+  }
+  return std::numbers::pi / (2.0 * a);
+}
+
+namespace {
+
+std::optional<ClosedFormError> circleError(const mysim::Model& model, const mysim::RunRecord& run) {
+  double worst = 0.0;
+  const Eigen::Vector2d s = model.circle_start;
+  for (std::size_t f = 0; f < run.frames.size(); ++f) {
+    const double t = run.times[f];
+    const Eigen::Vector2d exact(s.x() * std::cos(t) - s.y() * std::sin(t),
+                                s.x() * std::sin(t) + s.y() * std::cos(t));
+    worst = std::max(worst, (run.frames[f].row(0).head<2>().transpose() - exact).norm());
+  }
+  return ClosedFormError{"circle position", worst, s.norm()};
+}
+
+// A uniform chain read back from its model: what the closed forms need.
+struct UniformChain {
+  int particles;
+  double rest_length, particle_mass, stiffness, damping;
+  mysim::Vec3 origin, direction;
+};
+
+// The chain's parameters, if the model is a chain of equal springs and equal free masses.
+std::optional<UniformChain> uniformChain(const mysim::Model& model) {
+  if (model.kind != mysim::SystemKind::Chain || model.springs.empty()) return std::nullopt;
+  const mysim::Spring& s0 = model.springs.front();
+  for (const mysim::Spring& s : model.springs) {
+    if (s.rest_length != s0.rest_length || s.stiffness != s0.stiffness || s.damping != s0.damping) {
+      return std::nullopt;
+    }
+  }
+  for (int p = 1; p < model.particleCount(); ++p) {
+    if (model.mass[p] != model.mass[1]) return std::nullopt;
+  }
+  const mysim::Vec3 origin = mysim::at3(model.start_position, 0);
+  const mysim::Vec3 next = mysim::at3(model.start_position, 1);
+  return UniformChain{
+      model.particleCount(),       s0.rest_length, model.mass[1], s0.stiffness, s0.damping, origin,
+      (next - origin).normalized()};
+}
+
+std::optional<ClosedFormError> chainSagError(const mysim::Model& model, const UniformChain& c,
+                                             const mysim::RunRecord& run) {
+  const int n = c.particles - 1;
+  const double g = model.gravity.norm();
+  const mysim::Vec3 down = model.gravity / g;
+  double worst = 0.0, end = 0.0;
+  for (int j = 1; j <= n; ++j) {
+    const double drop =
+        j * c.rest_length + (c.particle_mass * g / c.stiffness) * j * (2 * n - j + 1) / 2.0;
+    const mysim::Vec3 exact = c.origin + drop * down;
+    worst = std::max(worst, (run.frames.back().row(j).head<3>().transpose() - exact).norm());
+    end = drop;
+  }
+  return ClosedFormError{"hanging chain at rest", worst, end};
+}
+
+std::optional<ClosedFormError> pendulumPeriodError(const mysim::Model& model, const UniformChain& c,
+                                                   const mysim::RunRecord& run) {
+  const double g = model.gravity.norm();
+  const mysim::Vec3 down = model.gravity / g;
+  // Released at rest at angle theta0 from the downward vertical.
+  const double theta0 = std::acos(std::clamp(c.direction.dot(down), -1.0, 1.0));
+  const double period = 4.0 * std::sqrt(c.rest_length / g) * ellipticK(std::sin(theta0 / 2));
+  // Horizontal offset of the bob from the pin, along the start direction's horizontal part.
+  const mysim::Vec3 across = (c.direction - c.direction.dot(down) * down).normalized();
+  std::vector<double> crossings;  // times the bob crosses below the pin going the same way
+  double previous = 0.0;
+  for (std::size_t f = 0; f < run.frames.size(); ++f) {
+    const double u = across.dot(run.frames[f].row(1).head<3>().transpose() - c.origin);
+    if (f > 0 && previous > 0 && u <= 0) {
+      crossings.push_back(run.times[f - 1] +
+                          (run.times[f] - run.times[f - 1]) * previous / (previous - u));
+    }
+    previous = u;
+  }
+  if (crossings.size() < 2) return std::nullopt;
+  const double measured = (crossings.back() - crossings.front()) / (crossings.size() - 1);
+  return ClosedFormError{"pendulum period", std::abs(measured / period - 1.0), period};
+}
+
+}  // namespace
+
+std::optional<ClosedFormError> closedFormError(const mysim::Model& model,
+                                               const mysim::RunRecord& run) {
+  if (run.frames.empty()) return std::nullopt;
+  if (model.isCircle()) return circleError(model, run);
+  const std::optional<UniformChain> chain = uniformChain(model);
+  std::vector<char> only_first_pinned(model.particleCount(), 0);
+  if (!only_first_pinned.empty()) only_first_pinned[0] = 1;
+  if (!chain || model.pinned != only_first_pinned || model.gravity.norm() == 0.0 || model.wind ||
+      model.pin_motion || model.sphere) {
+    return std::nullopt;
+  }
+  const double alignment = chain->direction.dot(model.gravity.normalized());
+  if (alignment > 1.0 - 1e-12) return chainSagError(model, *chain, run);
+  if (chain->particles == 2 && model.drag == 0.0 && chain->damping == 0.0) {
+    return pendulumPeriodError(model, *chain, run);
+  }
+  return std::nullopt;
+}
+
+}  // namespace springcheck

@@ -1,0 +1,171 @@
+#include "compare/metrics/run_metrics.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "compare/metrics/penetration_metric.h"
+#include "compare/metrics/sag_metric.h"
+#include "compare/metrics/settling_metric.h"
+#include "mysim/cloth_mesh.h"
+
+namespace springcheck {
+
+EngineMetrics engineMetrics(const mysim::Scene& scene, const mysim::Model& model,
+                            const EngineRun& run) {
+  const mysim::RunRecord& r = run.record;
+  EngineMetrics m;
+  m.engine = run.engine;
+  m.blew_up = r.blowup.has_value();
+  m.status = r.status();
+  m.blowup_time = r.blowup ? r.blowup->time : 0.0;
+  m.wall_seconds = r.wall_seconds;
+  m.wall_median_seconds = r.wall_median_seconds;
+  m.realtime_factor = r.realtimeFactor();
+  m.repeats = r.repeats;
+  m.threads = r.threads;
+  m.steps = r.steps;
+  m.closed_form = closedFormError(model, r);
+  m.drift = energyDrift(r.energies);
+  m.external_work = model.wind.has_value() || model.pin_motion.has_value();
+  if (scene.kind == mysim::SystemKind::Circle) return m;
+
+  const SagSeries sag = sagOverTime(model, r);
+  m.sag_lowest = sag.lowest.back();
+  if (!sag.free_middle.empty()) m.sag_free_middle = sag.free_middle.back();
+  if (model.sphere) {
+    for (const Penetration& p : penetrationOverTime(*model.sphere, r)) {
+      m.penetration_max = std::max(m.penetration_max, p.deepest);
+      m.penetration_mean_max = std::max(m.penetration_mean_max, p.mean_depth);
+      m.penetration_count_max = std::max(m.penetration_count_max, p.count);
+    }
+  }
+  m.settling_time = settlingTime(r);
+  m.max_strain = maxStrainOverRun(model, r);
+  m.momentum = momentumDrift(model, r);
+  return m;
+}
+
+Surface surfaceOf(const mysim::Model& model, const mysim::ParticleRows& frame) {
+  Surface s{frame.leftCols<3>(), {}};
+  if (model.grid) {
+    s.triangles = mysim::gridTriangles(*model.grid);
+  } else {
+    for (const mysim::Spring& sp : model.springs) s.triangles.emplace_back(sp.i, sp.j, sp.j);
+    if (s.triangles.empty()) {
+      for (int p = 0; p < frame.rows(); ++p) s.triangles.emplace_back(p, p, p);
+    }
+  }
+  return s;
+}
+
+PairMetrics pairMetrics(const mysim::Scene& scene, const mysim::Model& model, const EngineRun& a,
+                        const EngineRun& b) {
+  PairMetrics m;
+  m.a = a.engine;
+  m.b = b.engine;
+  const mysim::ParticleRows& fa = a.record.frames.back();
+  const mysim::ParticleRows& fb = b.record.frames.back();
+  m.drape = nodeDistance(fa.leftCols<3>(), fb.leftCols<3>());
+  if (scene.kind != mysim::SystemKind::Circle) {
+    m.surface = surfaceDistance(surfaceOf(model, fa), surfaceOf(model, fb));
+    m.sag_difference = std::abs(sagOverTime(model, a.record).lowest.back() -
+                                sagOverTime(model, b.record).lowest.back());
+  }
+  if (auto d = trajectoryDistance(a.record, b.record)) m.trajectory_rms_max = d->max_rms;
+  return m;
+}
+
+std::optional<TrajectoryDistance> trajectoryDistance(const mysim::RunRecord& a,
+                                                     const mysim::RunRecord& b) {
+  // Frames at the times both runs sampled (runs whose durations are not whole multiples of their
+  // steps end at different times and add a last frame of their own: those are skipped).
+  const auto& ta = a.times;
+  const auto& tb = b.times;
+  auto same = [](double x, double y) {
+    return std::abs(x - y) <= 1e-9 * std::max(1.0, std::abs(x));
+  };
+  TrajectoryDistance d;
+  bool any = false;
+  for (std::size_t i = 0, j = 0; i < ta.size() && j < tb.size();) {
+    if (same(ta[i], tb[j])) {
+      d.last_rms = nodeDistance(a.frames[i].leftCols<3>(), b.frames[j].leftCols<3>()).rms;
+      d.max_rms = std::max(d.max_rms, d.last_rms);
+      any = true;
+      ++i;
+      ++j;
+    } else if (ta[i] < tb[j]) {
+      ++i;
+    } else {
+      ++j;
+    }
+  }
+  if (!any) return std::nullopt;
+  return d;
+}
+
+const std::vector<MetricInfo>& metricCatalog() {
+  static const std::vector<MetricInfo> catalog = {
+      {"blowup", false, "1/0", "1 if the run blew up"},
+      {"closed_form_error", false, "m or rel", "error against the scene's closed form"},
+      {"sag_lowest", false, "m", "lowest point below the pins at the end"},
+      {"sag_free_middle", false, "m", "middle of the free edge below the pins at the end"},
+      {"penetration_max", false, "m", "deepest node inside the sphere, any frame"},
+      {"penetration_mean_max", false, "m", "largest per-frame mean depth of penetrating nodes"},
+      {"energy_drift_max", false, "rel", "max |E(t) - E(0)| / E_ref"},
+      {"energy_rise", false, "J", "largest rise of total energy above an earlier low"},
+      {"settling_time", false, "s", "time after which KE stays below 1e-4 of its peak"},
+      {"max_strain", false, "rel", "largest |l / rest - 1| of any spring, any frame"},
+      {"linear_momentum_drift", false, "rel",
+       "max |P(t) - P(0) - M g t| / max sum m|v| (free bodies only)"},
+      {"angular_momentum_drift", false, "rel",
+       "max |L(t) - L(0)| about the centre of mass / its scale (free bodies only)"},
+      {"drape_rms", true, "m", "RMS per-node distance of the final shapes"},
+      {"drape_max", true, "m", "max per-node distance of the final shapes"},
+      {"chamfer", true, "m", "symmetric Chamfer distance of the final surfaces"},
+      {"hausdorff", true, "m", "Hausdorff distance of the final surfaces"},
+      {"sag_difference", true, "m", "difference of the final lowest-point sag"},
+      {"trajectory_rms_max", true, "m", "max over frames of the RMS node distance"},
+  };
+  return catalog;
+}
+
+const MetricInfo* findMetric(std::string_view name) {
+  for (const MetricInfo& info : metricCatalog()) {
+    if (info.name == name) return &info;
+  }
+  return nullptr;
+}
+
+std::optional<double> metricValue(const EngineMetrics& m, std::string_view name) {
+  if (name == "blowup") return m.blew_up ? 1.0 : 0.0;
+  if (name == "closed_form_error") {
+    return m.closed_form ? std::optional(m.closed_form->error) : std::nullopt;
+  }
+  if (name == "sag_lowest") return m.sag_lowest;
+  if (name == "sag_free_middle") return m.sag_free_middle;
+  if (name == "penetration_max") return m.penetration_max;
+  if (name == "penetration_mean_max") return m.penetration_mean_max;
+  if (name == "energy_drift_max") return m.drift.max_abs_total;
+  if (name == "energy_rise") return m.drift.max_rise;
+  if (name == "settling_time") return m.settling_time;
+  if (name == "max_strain") return m.max_strain;
+  if (name == "linear_momentum_drift") {
+    return m.momentum ? std::optional(m.momentum->linear) : std::nullopt;
+  }
+  if (name == "angular_momentum_drift") {
+    return m.momentum ? std::optional(m.momentum->angular) : std::nullopt;
+  }
+  return std::nullopt;
+}
+
+std::optional<double> metricValue(const PairMetrics& m, std::string_view name) {
+  if (name == "drape_rms") return m.drape.rms;
+  if (name == "drape_max") return m.drape.max;
+  if (name == "chamfer") return m.surface.chamfer;
+  if (name == "hausdorff") return m.surface.hausdorff;
+  if (name == "sag_difference") return m.sag_difference;
+  if (name == "trajectory_rms_max") return m.trajectory_rms_max;
+  return std::nullopt;
+}
+
+}  // namespace springcheck

@@ -1,0 +1,34 @@
+#pragma once
+#include <map>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "compare/studies/comparison.h"
+#include "compare/studies/tolerances.h"
+
+namespace springcheck {
+
+struct CheckResult {
+  ToleranceCheck check;
+  std::optional<double> measured;
+  bool passed = false;
+  std::string problem;  // why there is no measurement (refused, blew up, metric undefined)
+};
+
+struct GateReport {
+  std::vector<CheckResult> results;
+  bool passed() const;
+};
+
+// Comparisons already run, by scene file (as std::filesystem::weakly_canonical names it).
+using ComparisonCache = std::map<std::string, Comparison>;
+
+// Runs each scene once in every engine its checks name, then checks every bound. A scene in
+// `done` that ran every engine its checks need is not run again.
+GateReport runGate(const EngineRegistry& registry, const Tolerances& tolerances,
+                   const ComparisonCache& done = {});
+void printGate(std::ostream& out, const GateReport& report);
+
+}  // namespace springcheck

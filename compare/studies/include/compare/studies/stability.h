@@ -1,0 +1,81 @@
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compare/engines/engine_registry.h"
+#include "mysim/scene.h"
+
+namespace springcheck {
+
+// The test oscillator: a particle of mass m on a spring of stiffness k to a pinned anchor,
+// displaced 10 % of the 1 m rest length, with drag c = 2 zeta sqrt(k m).
+mysim::Scene oscillatorScene(double stiffness, double mass, double damping_ratio);
+
+// Theory for the largest stable step on that oscillator (w = sqrt(k / m)), from each method's
+// amplification factor on y' = lambda y, lambda = -zeta w +- i w sqrt(1 - zeta^2):
+//   symplectic Euler, Verlet: h w < 2 (undamped);  RK4: h w <= 2 sqrt(2) (undamped);
+//   forward Euler: |1 + h lambda| <= 1 <=> h <= 2 zeta / w = c / k;
+//   backward Euler: any h (infinity);  trapezoidal (Heun) and dopri5: no finite line (none).
+std::optional<double> theoryStableStep(const std::string& integrator, double stiffness, double mass,
+                                       double damping_ratio);
+
+struct StabilityLimit {
+  std::string system;          // "oscillator" or the scene's name
+  std::string integrator;      // the oscillator's; on a scene, the engine spec ("mysim:rk4", ...)
+  double mass_ratio = 1.0;     // scenes: heavy / light neighbour
+  double w_max = 0.0;          // rad/s, highest natural frequency (natural_frequency.h)
+  std::string unstable_check;  // the health check the smallest unstable step failed
+  double stiffness = 0.0;      // N/m
+  double mass = 0.0;           // kg
+  double h_stable = 0.0;       // largest step found stable, s
+  double h_unstable = 0.0;     // smallest step found unstable (0 if none up to the range's top), s
+  std::string status;          // "bracketed", "stable-at-max", "unstable-at-min"
+  std::optional<double> theory;  // s
+};
+
+struct StabilitySettings {
+  double periods = 50;         // oscillator run length, in periods (at least 200 steps)
+  double energy_bound = 10.0;  // stable: total energy never above this many times its start
+  double h_min_omega = 1e-3;   // search range, as h w
+  double h_max_omega = 100.0;
+  double precision = 0.01;  // stop when h_unstable / h_stable < 1 + precision
+};
+
+// Largest stable step by bisection (in log h) for one integrator on the oscillator.
+StabilityLimit oscillatorStability(const EngineRegistry& registry, const std::string& integrator,
+                                   double stiffness, double mass, double damping_ratio,
+                                   const StabilitySettings& settings);
+
+// The constant c of an engine's stability limit h w_max < c on an undamped linear system, where
+// theory gives one: symplectic Euler and Verlet (and bullet-deformable, which is symplectic Euler)
+// 2, RK4 2 sqrt 2, backward Euler (and bullet-implicit) infinity. Nothing for the rest: forward
+// Euler and Heun's trapezoidal are unstable at any step without damping and are limited by the
+// damping with it; dopri5 adapts its step; bullet-classic moves positions, not forces.
+std::optional<double> stepLimitConstant(const std::string& integrator);
+// The integrator behind an engine spec with the scene's integrator `scene_integrator`:
+// "mysim" -> it, "mysim:rk4" -> "rk4", Bullet engines -> their scheme's name, else the spec.
+std::string schemeOf(const std::string& engine, const std::string& scene_integrator);
+
+// The model with every spring at `stiffness` (0: keep each) and neighbouring particles' masses in
+// the ratio `mass_ratio` (heavy / light, alternating along the index, in a checkerboard on a
+// cloth grid; the total mass kept): light and heavy particles mixed, a classic stressor.
+mysim::Model stressedModel(const mysim::Model& model, double stiffness, double mass_ratio);
+
+struct SceneStabilitySettings {
+  long steps = 4000;  // each trial runs this many steps (instability grows per step)
+  // > 0: each trial runs this long instead (s), whatever its step: a step called stable then
+  // holds over the whole run, at the price of many steps at small h.
+  double duration = 0.0;
+  double h_min_omega = 1e-2;  // search range, as h w_max
+  double h_max_omega = 30.0;
+  double precision = 0.02;  // stop when h_unstable / h_stable < 1 + precision
+};
+
+// Largest stable step of one engine on a (stressed) model by bisection in log h; stable = no
+// health check fails (blow-up, strain, energy, energy rise in a passive scene, step limit).
+StabilityLimit sceneStability(const EngineRegistry& registry, const mysim::Model& model,
+                              const RunConfig& config, const std::string& engine,
+                              const SceneStabilitySettings& settings);
+
+}  // namespace springcheck

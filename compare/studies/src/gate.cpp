@@ -1,0 +1,141 @@
+#include "compare/studies/gate.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include "compare/studies/comparison.h"
+#include "mysim/scene_file.h"
+
+namespace springcheck {
+
+bool GateReport::passed() const {
+  return std::all_of(results.begin(), results.end(), [](const CheckResult& r) { return r.passed; });
+}
+
+namespace {
+
+CheckResult evaluate(const ToleranceCheck& check, const Comparison& c) {
+  CheckResult r{check, std::nullopt, false, ""};
+  for (const Comparison::Refusal& refusal : c.refused) {
+    if (std::find(check.engines.begin(), check.engines.end(), refusal.engine) !=
+        check.engines.end()) {
+      r.problem = "refused: " + refusal.reason;
+      return r;
+    }
+  }
+  for (const Comparison::Refusal& failure : c.failed) {
+    if (std::find(check.engines.begin(), check.engines.end(), failure.engine) !=
+        check.engines.end()) {
+      r.problem = "failed: " + failure.reason;
+      return r;
+    }
+  }
+  auto metrics_of = [&](const std::string& engine) -> const EngineMetrics* {
+    for (const EngineMetrics& m : c.engines) {
+      if (m.engine == engine) return &m;
+    }
+    return nullptr;
+  };
+  if (check.engines.size() == 1) {
+    const EngineMetrics* m = metrics_of(check.engines[0]);
+    if (m->blew_up && check.metric != "blowup") {
+      r.problem = check.engines[0] + " blew up at t = " + std::to_string(m->blowup_time) + " s";
+      return r;
+    }
+    r.measured = metricValue(*m, check.metric);
+  } else {
+    for (const std::string& engine : check.engines) {
+      if (metrics_of(engine)->blew_up) {
+        r.problem =
+            engine + " blew up at t = " + std::to_string(metrics_of(engine)->blowup_time) + " s";
+        return r;
+      }
+    }
+    for (const PairMetrics& p : c.pairs) {
+      if ((p.a == check.engines[0] && p.b == check.engines[1]) ||
+          (p.a == check.engines[1] && p.b == check.engines[0])) {
+        r.measured = metricValue(p, check.metric);
+      }
+    }
+  }
+  if (!r.measured) {
+    r.problem = "metric '" + check.metric + "' is not defined for this scene";
+    return r;
+  }
+  r.passed = *r.measured <= check.bound;
+  return r;
+}
+
+}  // namespace
+
+namespace {
+
+// Whether a comparison holds (a run, a refusal or a failure of) every engine in `engines`.
+bool covers(const Comparison& c, const std::vector<std::string>& engines) {
+  for (const std::string& e : engines) {
+    auto named = [&](const auto& list) {
+      return std::any_of(list.begin(), list.end(), [&](const auto& x) { return x.engine == e; });
+    };
+    if (!named(c.runs) && !named(c.refused) && !named(c.failed)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+GateReport runGate(const EngineRegistry& registry, const Tolerances& tolerances,
+                   const ComparisonCache& done) {
+  // Engines per scene, in order of first mention, so every run happens once.
+  std::map<std::string, std::vector<std::string>> engines;
+  std::vector<std::string> scenes;
+  for (const ToleranceCheck& check : tolerances.checks) {
+    if (!engines.count(check.scene)) scenes.push_back(check.scene);
+    auto& list = engines[check.scene];
+    for (const std::string& e : check.engines) {
+      if (std::find(list.begin(), list.end(), e) == list.end()) list.push_back(e);
+    }
+  }
+  GateReport report;
+  std::map<std::string, Comparison> comparisons;
+  for (const std::string& path : scenes) {
+    std::error_code ec;
+    const auto cached = done.find(std::filesystem::weakly_canonical(path, ec).string());
+    if (cached != done.end() && covers(cached->second, engines[path])) {
+      comparisons.emplace(path, cached->second);
+      continue;
+    }
+    auto scene = registry.loadScene(path);  // validated when the tolerances were read
+    auto comparison = compareScene(registry, *scene, engines[path]);
+    comparisons.emplace(path, std::move(*comparison));
+  }
+  for (const ToleranceCheck& check : tolerances.checks) {
+    report.results.push_back(evaluate(check, comparisons.at(check.scene)));
+  }
+  return report;
+}
+
+void printGate(std::ostream& out, const GateReport& report) {
+  int failed = 0;
+  char line[1024];
+  for (const CheckResult& r : report.results) {
+    std::string engines = r.check.engines[0];
+    if (r.check.engines.size() > 1) engines += " ~ " + r.check.engines[1];
+    std::string scene = r.check.scene.substr(r.check.scene.find_last_of('/') + 1);
+    if (r.measured) {
+      std::snprintf(line, sizeof line, "%s  %-22s %-20s %-44s %11.4g <= %-11.4g",
+                    r.passed ? "PASS" : "FAIL", scene.c_str(), r.check.metric.c_str(),
+                    engines.c_str(), *r.measured, r.check.bound);
+    } else {
+      std::snprintf(line, sizeof line, "FAIL  %-22s %-20s %-44s %s", scene.c_str(),
+                    r.check.metric.c_str(), engines.c_str(), r.problem.c_str());
+    }
+    out << line << "\n      why: " << r.check.why << '\n';
+    failed += !r.passed;
+  }
+  out << "gate: " << report.results.size() - failed << " passed, " << failed << " failed\n";
+}
+
+}  // namespace springcheck

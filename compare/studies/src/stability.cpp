@@ -1,0 +1,186 @@
+#include "compare/studies/stability.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+#include "compare/studies/natural_frequency.h"
+
+namespace springcheck {
+
+mysim::Scene oscillatorScene(double stiffness, double mass, double damping_ratio) {
+  mysim::Scene s;
+  s.name = "oscillator";
+  s.source = "(built-in oscillator)";
+  s.kind = mysim::SystemKind::Particles;
+  s.particles = {{mysim::Vec3::Zero(), mysim::Vec3::Zero(), mass, true},
+                 {mysim::Vec3(1.1, 0, 0), mysim::Vec3::Zero(), mass, false}};
+  s.springs = {{0, 1, 1.0, stiffness, 0.0, mysim::SpringFamily::Custom}};
+  s.drag = 2.0 * damping_ratio * std::sqrt(stiffness * mass);
+  // The health checks would call a swinging-but-bounded symplectic run "blown up" long before the
+  // energy bound below; the bound is this study's criterion, so loosen them.
+  s.limits.max_strain = 1e6;
+  s.limits.max_energy_ratio = 1e12;
+  s.limits.max_energy_rise = std::numeric_limits<double>::infinity();
+  s.limits.max_energy_rise_damped = std::numeric_limits<double>::infinity();
+  return s;
+}
+
+std::optional<double> theoryStableStep(const std::string& integrator, double stiffness, double mass,
+                                       double damping_ratio) {
+  const double w = std::sqrt(stiffness / mass);
+  if (integrator == "symplectic-euler" || integrator == "verlet") return 2.0 / w;
+  if (integrator == "rk4") return 2.0 * std::sqrt(2.0) / w;
+  if (integrator == "euler") return 2.0 * damping_ratio / w;
+  if (integrator == "backward-euler") return std::numeric_limits<double>::infinity();
+  return std::nullopt;
+}
+
+namespace {
+
+// Bisection in log h between a stable and an unstable step. `stable` may say why a step is not.
+StabilityLimit bisect(const std::function<bool(double, std::string&)>& stable_because, double h_min,
+                      double h_max, double precision) {
+  std::string why, last_why;
+  auto stable = [&](double h) {
+    why.clear();
+    const bool ok = stable_because(h, why);
+    if (!ok) last_why = why;
+    return ok;
+  };
+  StabilityLimit limit = [&] {
+    StabilityLimit limit;
+    if (stable(h_max)) {
+      limit.h_stable = h_max;
+      limit.status = "stable-at-max";
+      return limit;
+    }
+    if (!stable(h_min)) {
+      limit.h_unstable = h_min;
+      limit.status = "unstable-at-min";
+      return limit;
+    }
+    double lo = h_min, hi = h_max;
+    while (hi / lo > 1.0 + precision) {
+      const double mid = std::sqrt(lo * hi);
+      (stable(mid) ? lo : hi) = mid;
+    }
+    limit.h_stable = lo;
+    limit.h_unstable = hi;
+    limit.status = "bracketed";
+    return limit;
+  }();
+  limit.unstable_check = last_why;
+  return limit;
+}
+
+}  // namespace
+
+StabilityLimit oscillatorStability(const EngineRegistry& registry, const std::string& integrator,
+                                   double stiffness, double mass, double damping_ratio,
+                                   const StabilitySettings& settings) {
+  const double w = std::sqrt(stiffness / mass);
+  const mysim::Scene scene = oscillatorScene(stiffness, mass, damping_ratio);
+  const mysim::Model model = mysim::buildModel(scene);
+  RunConfig config = runConfig(scene);
+  config.integrator.name = integrator;
+  config.integrator.cg_tolerance = 1e-12;
+  auto stable = [&](double h, std::string&) {
+    RunConfig run = config;
+    run.run.dt = h;
+    run.run.duration = h * std::max(200.0, std::ceil(settings.periods * 2 * M_PI / (w * h)));
+    auto record = registry.run("mysim", model, run);
+    if (!record || record->blowup) return false;
+    const double e0 = record->energies.front().total();
+    for (const mysim::EnergyTerms& e : record->energies) {
+      if (!(e.total() <= settings.energy_bound * e0)) return false;  // NaN counts as unstable
+    }
+    return true;
+  };
+  StabilityLimit limit =
+      bisect(stable, settings.h_min_omega / w, settings.h_max_omega / w, settings.precision);
+  limit.system = "oscillator";
+  limit.integrator = integrator;
+  limit.stiffness = stiffness;
+  limit.mass = mass;
+  limit.theory = theoryStableStep(integrator, stiffness, mass, damping_ratio);
+  return limit;
+}
+
+std::optional<double> stepLimitConstant(const std::string& integrator) {
+  if (integrator == "symplectic-euler" || integrator == "verlet") return 2.0;
+  if (integrator == "rk4") return 2.0 * std::sqrt(2.0);
+  if (integrator == "backward-euler") return std::numeric_limits<double>::infinity();
+  return std::nullopt;
+}
+
+std::string schemeOf(const std::string& engine, const std::string& scene_integrator) {
+  if (engine == "mysim") return scene_integrator;
+  if (engine.starts_with("mysim:")) return engine.substr(6);
+  if (engine == "bullet-deformable") return "symplectic-euler";  // docs/reference.md
+  if (engine == "bullet-implicit") return "backward-euler";      // one Newton step, linearised
+  return engine;
+}
+
+mysim::Model stressedModel(const mysim::Model& model, double stiffness, double mass_ratio) {
+  mysim::Model m = model;
+  if (stiffness > 0) {
+    for (mysim::Spring& s : m.springs.edit()) s.stiffness = stiffness;
+  }
+  if (mass_ratio != 1.0 && m.particleCount() > 1) {
+    auto heavy = [&](int p) {
+      if (m.grid) return (p / m.grid->cols + p % m.grid->cols) % 2 == 1;
+      return p % 2 == 1;
+    };
+    int heavy_count = 0;
+    for (int p = 0; p < m.particleCount(); ++p) heavy_count += heavy(p);
+    const double light =
+        model.mass.sum() / ((m.particleCount() - heavy_count) + mass_ratio * heavy_count);
+    for (int p = 0; p < m.particleCount(); ++p) m.mass[p] = heavy(p) ? mass_ratio * light : light;
+  }
+  return m;
+}
+
+StabilityLimit sceneStability(const EngineRegistry& registry, const mysim::Model& model,
+                              const RunConfig& config, const std::string& engine,
+                              const SceneStabilitySettings& settings) {
+  const double w_max = highestFrequency(model);
+  // Without a spring mode to scale by, search the scene's own range.
+  const double h_min = w_max > 0 ? settings.h_min_omega / w_max : config.run.dt / 100;
+  const double h_max = w_max > 0 ? settings.h_max_omega / w_max : config.run.dt * 100;
+  std::optional<std::string> refusal;
+  auto stable = [&](double h, std::string& why) {
+    RunConfig run = config;
+    run.run.dt = h;
+    const long steps =
+        settings.duration > 0 ? std::max(1L, std::lround(settings.duration / h)) : settings.steps;
+    run.run.duration = h * static_cast<double>(steps);
+    run.run.sample_interval = h * static_cast<double>(std::max(1L, steps / 100));
+    auto record = registry.run(engine, model, run);
+    if (!record) {
+      why = record.error().message;
+      if (record.error().kind != EngineError::Kind::Failed) refusal = why;
+      return false;
+    }
+    if (record->blowup) why = record->blowup->check;
+    return !record->blowup;
+  };
+  StabilityLimit limit = bisect(stable, h_min, h_max, settings.precision);
+  if (refusal) {  // the engine cannot run this model at all: no limit to report
+    limit = StabilityLimit{};
+    limit.status = "refused";
+    limit.unstable_check = *refusal;
+  }
+  limit.system = config.scene_name;
+  limit.integrator = engine;
+  limit.w_max = w_max;
+  limit.mass = model.mass.size() > 0 ? model.mass.maxCoeff() : 0.0;
+  limit.stiffness = model.springs.empty() ? 0.0 : model.springs.front().stiffness;
+  if (auto c = stepLimitConstant(schemeOf(engine, config.integrator.name)); c && w_max > 0) {
+    limit.theory = *c / w_max;
+  }
+  return limit;
+}
+
+}  // namespace springcheck

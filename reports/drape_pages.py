@@ -1,13 +1,13 @@
-"""The settled cloth: its shape in true proportions, the sphere under it, and where each engine
+"""The settled cloth: its shape in true proportions, the colliders under it, and where each engine
 puts each node relative to the first engine."""
 import math
 from collections import defaultdict
 
 import numpy as np
 from matplotlib import cm, colors
-from matplotlib.patches import Circle
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
+import colliders as colliders_drawing
 from report_style import Page, number, plot_area, read_csv
 
 
@@ -34,14 +34,8 @@ def equal_aspect_3d(ax, points):
     ax.set_box_aspect((span[0], span[2], span[1]))
 
 
-def sphere_points(sphere, n=24):
-    u, v = np.meshgrid(np.linspace(0, 2 * math.pi, n), np.linspace(0, math.pi, n // 2))
-    c, r = sphere["center"], sphere["radius"]
-    return c[0] + r * np.cos(u) * np.sin(v), c[1] + r * np.cos(v), c[2] + r * np.sin(u) * np.sin(v)
-
-
 def comparison_page(c):
-    sphere = c.get("model", {}).get("sphere")
+    colliders = c.get("model", {}).get("colliders") or []
 
     def draw(fig, ctx):
         runs = [e for e in c["engines"] if e.get("final_state") and e.get("final")]
@@ -72,12 +66,7 @@ def comparison_page(c):
         mesh = Poly3DCollection(xyz[faces][:, :, [0, 2, 1]], facecolors=face_colours, edgecolors="0.35",
                                 linewidths=0.15, alpha=0.95)
         ax.add_collection3d(mesh)
-        points = xyz
-        if sphere:
-            sx, sy, sz = sphere_points(sphere)
-            ax.plot_wireframe(sx, sz, sy, color="0.5", lw=0.4, alpha=0.6)
-            points = np.vstack([xyz, np.column_stack([sx.ravel(), sy.ravel(), sz.ravel()])])
-        equal_aspect_3d(ax, points)
+        equal_aspect_3d(ax, np.vstack([xyz, colliders_drawing.draw_3d(ax, colliders, xyz)]))
         ax.set_xlabel("x [m]", fontsize=8)
         ax.set_ylabel("z [m]", fontsize=8)
         ax.set_zlabel("y [m]", fontsize=8)
@@ -96,9 +85,7 @@ def comparison_page(c):
             d = np.array([distance[e["name"]].get(n, 0.0) for n in range(len(mine))])
             flat.scatter(mine[:, u], mine[:, v], c=np.maximum(d, norm.vmin) if norm else d, cmap=cmap,
                          norm=norm, s=10)
-            if sphere:
-                flat.add_patch(Circle((sphere["center"][u], sphere["center"][v]), sphere["radius"],
-                                      fill=False, color="0.5", lw=0.8, linestyle="--"))
+            colliders_drawing.draw_flat(flat, colliders, u, v)
             flat.set_aspect("equal")
             flat.set_title(f"{e['name']}: max {max(d):.2g} m", fontsize=8)
             flat.tick_params(labelsize=6)
@@ -113,8 +100,8 @@ def comparison_page(c):
 
     return Page(f"drape_{c['group'].replace('/', '_')}_{c['scene']}",
                 f"Where do the engines disagree on the settled cloth? ({c['scene']})",
-                "Left: the last frame of the first engine in true proportions (equal axes), the sphere as a "
-                "wire frame where the scene has one, each triangle coloured by the largest distance any other "
+                "Left: the last frame of the first engine in true proportions (equal axes), the colliders as "
+                "wire frames where the scene has them, each triangle coloured by the largest distance any other "
                 "engine's node has from this one. Right: the nodes flat, across the shape's two largest extents, one "
                 "panel per engine, each node coloured by its own distance (log colour scale, shared).", draw)
 

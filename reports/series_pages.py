@@ -1,4 +1,4 @@
-"""Sag and sphere penetration over time, one panel per scene, every engine in each."""
+"""Sag and collider penetration over time, one panel per scene, every engine in each."""
 import math
 from collections import defaultdict
 
@@ -56,12 +56,12 @@ def pages(manifest):
             "Drop of the lowest node below its start, per scene and engine, over the run. Lines that end "
             "early belong to runs that blew up; lines that part show engines that settle to different "
             "shapes (the drape pages show where).", part, "sag_lowest", 1.0, "lowest point's drop [m]"))
-    with_sphere = [c for c in manifest["comparisons"] if c["group"] not in ("energy",) and c.get("series")
-                   and c.get("model", {}).get("sphere")]
-    for n, part in enumerate(chunks(with_sphere)):
+    with_colliders = [c for c in manifest["comparisons"] if c["group"] not in ("energy",) and c.get("series")
+                      and c.get("model", {}).get("colliders")]
+    for n, part in enumerate(chunks(with_colliders)):
         result.append(panels_page(
-            f"penetration_{n + 1}", "Does any engine let the cloth sink into the sphere?",
-            "Depth of the deepest node inside the sphere (0: none inside), per scene and engine, over the "
+            f"penetration_{n + 1}", "Does any engine let the cloth sink into a collider?",
+            "Depth of the deepest node inside a collider (sphere, ground plane or box; 0: none inside), per scene and engine, over the "
             "run, in millimetres. mysim projects every node out after each step; Bullet corrects contacts "
             "through a signed-distance field, so a node may sit inside between corrections.",
             part, "penetration_deepest", 1e3, "deepest node inside [mm]"))

@@ -89,7 +89,7 @@ TEST(PenetrationMetric, DeepestMeanAndCountOfNodesInside) {
   frame.row(0).head<3>() << 0.9, 0, 0;  // 0.1 inside
   frame.row(1).head<3>() << 0, 0.7, 0;  // 0.3 inside
   frame.row(2).head<3>() << 0, 0, 2;    // outside
-  const Penetration p = penetration(sphere, frame);
+  const Penetration p = penetration({sphere}, frame);
   EXPECT_EQ(p.count, 2);
   EXPECT_NEAR(p.deepest, 0.3, 1e-15);
   EXPECT_NEAR(p.mean_depth, 0.2, 1e-15);

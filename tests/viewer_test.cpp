@@ -32,21 +32,21 @@ double meanZ(const EngineView& e) {
 
 TEST(ViewerKeys, TCyclesScenesInOrderAndWraps) {
   ViewerSession s = session();
-  EXPECT_EQ(s.scene().name, "cloth_hanging");
+  EXPECT_EQ(s.config().scene_name, "cloth_hanging");
   ASSERT_TRUE(s.handleKey('t'));
-  EXPECT_EQ(s.scene().name, "cloth_on_sphere");
+  EXPECT_EQ(s.config().scene_name, "cloth_on_sphere");
   ASSERT_TRUE(s.handleKey('t'));
-  EXPECT_EQ(s.scene().name, "circle");
+  EXPECT_EQ(s.config().scene_name, "circle");
   // Bullet runs the circle as its mechanical twin, beside mysim.
   EXPECT_TRUE(s.engines()[1].running()) << s.engines()[1].refused;
 }
 
 TEST(ViewerKeys, DTurnsWindOnAndOffInEveryEngine) {
   ViewerSession calm = session(), windy = session();
-  EXPECT_FALSE(windy.scene().wind);
+  EXPECT_FALSE(windy.model().wind);
   windy.handleKey('d');
   EXPECT_TRUE(windy.wind());
-  ASSERT_TRUE(windy.scene().wind);
+  ASSERT_TRUE(windy.model().wind);
   run(calm, 1.0);
   run(windy, 1.0);
   // Wind along +z pushes both engines' cloth towards +z, against the same cloth without it.
@@ -56,13 +56,13 @@ TEST(ViewerKeys, DTurnsWindOnAndOffInEveryEngine) {
         << windy.engines()[k].engine;
   }
   windy.handleKey('d');
-  EXPECT_FALSE(windy.scene().wind);
+  EXPECT_FALSE(windy.model().wind);
 }
 
 TEST(ViewerKeys, SSwingsThePinnedCorners) {
   ViewerSession s = session();
   s.handleKey('s');
-  ASSERT_TRUE(s.scene().pin_motion);
+  ASSERT_TRUE(s.model().pin_motion);
   run(s, 0.5);  // a quarter period of 0.5 Hz: the corners are 0.2 m along z
   EXPECT_NEAR(s.time(), 0.5, 1e-9);
   const EngineView& e = s.engines()[0];
@@ -100,7 +100,7 @@ TEST(ViewerKeys, TheCircleNamesTheIntegratorThatRunsAndRefusesWindAndSwing) {
   ViewerSession s = session();
   s.handleKey('i');  // symplectic-euler chosen on the cloth
   s.handleKey('t');  // -> on to the next scenes until the circle
-  while (s.scene().name != "circle") s.handleKey('t');
+  while (s.config().scene_name != "circle") s.handleKey('t');
   EXPECT_EQ(s.integrator(), "symplectic-euler");
   EXPECT_EQ(s.activeIntegrator(), "rk4");  // what the circle really steps with
   EXPECT_EQ(s.engines()[0].integrator, "rk4");
@@ -129,7 +129,7 @@ TEST(ViewerKeys, SpacePausesAndDotStepsOnce) {
 TEST(ViewerKeys, UnknownKeysDoNothing) {
   ViewerSession s = session();
   EXPECT_FALSE(s.handleKey('z'));
-  EXPECT_EQ(s.scene().name, "cloth_hanging");
+  EXPECT_EQ(s.config().scene_name, "cloth_hanging");
 }
 
 TEST(ViewerMetrics, EnginesStayCloseOnTheMatchedClothAndNothingEntersTheSphere) {

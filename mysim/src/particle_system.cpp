@@ -196,8 +196,8 @@ void ParticleSystem::afterStepConst(State& state) const {
     state.y.segment<3>(3 * p) = pinPosition(p, state.t);
     state.y.segment<3>(n3 + 3 * p) = pin_velocity;
   }
-  if (model_.sphere) {
-    resolveSphereContacts(*model_.sphere, model_.pinned, state.y.head(n3), state.y.tail(n3));
+  if (!model_.colliders.empty()) {
+    resolveContacts(model_.colliders, model_.pinned, state.y.head(n3), state.y.tail(n3));
   }
 }
 

@@ -45,7 +45,7 @@ Model buildModel(const Scene& scene) {
   model.drag = scene.drag;
   model.wind = scene.wind;
   model.pin_motion = scene.pin_motion;
-  model.sphere = scene.sphere;
+  model.colliders = scene.colliders;
   return model;
 }
 

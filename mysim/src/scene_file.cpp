@@ -260,14 +260,14 @@ Scene readScene(const json& root, const std::vector<EngineSection>& sections) {
     readForces(forces, scene);
     forces.refuseUnknown("docs/scenes.md");
   }
-  if (top.has("sphere")) {
+  if (top.has("sphere")) {  // the seed's one sphere, kept as its own field
     FieldReader r = top.object("sphere");
-    Sphere s;
-    s.center = r.vec3("center");
-    s.radius = r.positive("radius");
-    s.margin = r.nonNegative("margin", 1e-3 * s.radius);
+    scene.colliders.push_back(Sphere::read(r));
     r.refuseUnknown("docs/scenes.md");
-    scene.sphere = s;
+  }
+  if (top.has("colliders")) {
+    top.objects("colliders",
+                [&](FieldReader& r, std::size_t) { scene.colliders.push_back(readCollider(r)); });
   }
 
   FieldReader integ = top.object("integrator");

@@ -10,7 +10,7 @@
 
 #include "engine_support.h"
 #include "soft_body.h"
-#include "static_sphere.h"
+#include "static_collider.h"
 #include "steppers.h"
 
 namespace reference {
@@ -30,7 +30,7 @@ class ClassicStepper final : public BulletStepper {
     btSoftBodyWorldInfo& info = world_->getWorldInfo();
     info.m_gravity = g;  // the world info keeps its own gravity (default -10)
     info.m_sparsesdf.Initialize();
-    info.m_sparsesdf.setDefaultVoxelsz(model.sphere ? model.sphere->radius / 10 : 0.25);
+    info.m_sparsesdf.setDefaultVoxelsz(sdfVoxelSize(model.colliders));
     info.m_sparsesdf.Reset();
 
     // Materials shared by links of equal kLST (a cloth has a handful).
@@ -52,19 +52,18 @@ class ClassicStepper final : public BulletStepper {
     body_.reset(buildSoftBody(info, model, material));
     body_->m_cfg.piterations = iterations;
     body_->setActivationState(DISABLE_DEACTIVATION);
-    body_->getCollisionShape()->setMargin(model.sphere ? std::max(model.sphere->margin, 1e-4)
-                                                       : 1e-3);
+    body_->getCollisionShape()->setMargin(softBodyMargin(model.colliders));
     if (model.drag > 0.0) {
       // The classic solver sets v = (x - x_old) / h * (1 - kDP): viscous drag c is c h / m.
       body_->m_cfg.kDP = model.drag * h / uniformFreeMass(model);
       notes_.push_back("drag applied as Bullet's per-step velocity scale 1 - kDP, kDP = c h / m");
     }
     body_->m_cfg.collisions = 0;
-    if (model.sphere) {
+    if (!model.colliders.empty()) {
       body_->m_cfg.collisions = btSoftBody::fCollision::SDF_RS;
       body_->m_cfg.kKHR = 1.0;
-      body_->m_cfg.kDF = 0.0;  // frictionless, as mysim's sphere
-      sphere_ = std::make_unique<StaticSphere>(*world_, *model.sphere);
+      body_->m_cfg.kDF = 0.0;  // frictionless, as mysim's colliders
+      colliders_ = addColliders(*world_, model.colliders);
     }
     if (model.wind) {
       // Bullet's aero model (setWindVelocity with kLF/kDG) is a drag on relative velocity over
@@ -82,7 +81,7 @@ class ClassicStepper final : public BulletStepper {
 
   ~ClassicStepper() override {
     world_->removeSoftBody(body_.get());
-    sphere_.reset();
+    colliders_.clear();
   }
 
   mysim::StepCounts step(mysim::State& state, double h) override {
@@ -108,7 +107,7 @@ class ClassicStepper final : public BulletStepper {
   std::unique_ptr<btSequentialImpulseConstraintSolver> constraint_solver_;
   std::unique_ptr<btSoftRigidDynamicsWorld> world_;
   std::unique_ptr<btSoftBody> body_;
-  std::unique_ptr<StaticSphere> sphere_;
+  std::vector<std::unique_ptr<StaticCollider>> colliders_;
 };
 
 }  // namespace

@@ -14,7 +14,7 @@
 #include "deformable_forces.h"
 #include "engine_support.h"
 #include "soft_body.h"
-#include "static_sphere.h"
+#include "static_collider.h"
 #include "steppers.h"
 
 namespace reference {
@@ -89,23 +89,22 @@ class DeformableStepper final : public BulletStepper {
     world_->setGravity(g);
     btSoftBodyWorldInfo& info = world_->getWorldInfo();
     info.m_gravity = g;
-    info.m_sparsesdf.setDefaultVoxelsz(model.sphere ? model.sphere->radius / 10 : 0.25);
+    info.m_sparsesdf.setDefaultVoxelsz(sdfVoxelSize(model.colliders));
     info.m_sparsesdf.Reset();
 
     body_.reset(
         buildSoftBody(info, model, [](btSoftBody&, const mysim::Spring&) { return nullptr; }));
     body_->setActivationState(DISABLE_DEACTIVATION);  // else it sleeps below 0.04 m/s
-    body_->getCollisionShape()->setMargin(model.sphere ? std::max(model.sphere->margin, 1e-4)
-                                                       : 1e-3);
+    body_->getCollisionShape()->setMargin(softBodyMargin(model.colliders));
     body_->m_cfg.collisions = 0;
-    if (model.sphere) {
+    if (!model.colliders.empty()) {
       body_->m_cfg.collisions = btSoftBody::fCollision::SDF_RD | btSoftBody::fCollision::SDF_RDN;
       body_->m_cfg.kKHR = 1.0;  // contact hardness against static bodies: 0.1 by default (soft)
-      sphere_ = std::make_unique<StaticSphere>(*world_, *model.sphere);
+      colliders_ = addColliders(*world_, model.colliders);
       if (implicit) {
         notes_.push_back(
-            "implicit mode against a static sphere exploded in most set-ups tried "
-            "(docs/reference.md); a blow-up here is Bullet's, reported as is");
+            "implicit mode with static colliders: against a sphere it exploded in most set-ups "
+            "tried (docs/reference.md); a blow-up here is Bullet's, reported as is");
       }
     }
     world_->addSoftBody(body_.get());
@@ -150,7 +149,7 @@ class DeformableStepper final : public BulletStepper {
 
   ~DeformableStepper() override {
     world_->removeSoftBody(body_.get());
-    sphere_.reset();
+    colliders_.clear();
   }
 
   mysim::StepCounts step(mysim::State& state, double h) override {
@@ -179,7 +178,7 @@ class DeformableStepper final : public BulletStepper {
   std::unique_ptr<btDeformableGravityForce> gravity_;
   std::unique_ptr<DeformableWindForce> wind_;
   std::unique_ptr<DeformableDragForce> drag_;
-  std::unique_ptr<StaticSphere> sphere_;
+  std::vector<std::unique_ptr<StaticCollider>> colliders_;
 };
 
 }  // namespace

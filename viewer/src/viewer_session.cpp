@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "mysim/particle_system.h"
-#include "mysim/sphere_collider.h"
+#include "compare/metrics/penetration_metric.h"
 
 namespace viewer {
 
@@ -32,43 +32,35 @@ void ViewerSession::load() {
     engines_.clear();
     return;
   }
-  file_scene_ = *scene;
-  if (integrator_.empty()) integrator_ = file_scene_.integrator.name;
+  // The scene stops here: what the keys change is the model and the run's settings.
+  file_model_ = mysim::buildModel(*scene);
+  file_config_ = springcheck::runConfig(*scene);
+  if (integrator_.empty()) integrator_ = file_config_.integrator.name;
   build();
   frameCamera();
 }
 
 void ViewerSession::build() {
-  scene_ = file_scene_;
+  model_ = file_model_;
+  config_ = file_config_;
   // The circle takes first-order methods only: fall back to RK4 there.
-  auto info = std::find_if(mysim::integratorCatalog().begin(), mysim::integratorCatalog().end(),
-                           [&](const auto& i) { return i.name == integrator_; });
-  scene_.integrator.name = (scene_.kind == mysim::SystemKind::Circle &&
-                            info != mysim::integratorCatalog().end() && info->needs_particles)
-                               ? "rk4"
-                               : integrator_;
-  if (requested_dt_ > 0) scene_.dt = requested_dt_;
-  dt_ = scene_.dt;
-  if (wind_ && scene_.kind != mysim::SystemKind::Circle) {
+  const mysim::IntegratorInfo* info = mysim::findIntegrator(integrator_);
+  config_.integrator.name =
+      (model_.isCircle() && info && info->needs_particles) ? "rk4" : integrator_;
+  if (requested_dt_ > 0) config_.run.dt = requested_dt_;
+  dt_ = config_.run.dt;
+  if (wind_ && togglesApply()) {
     // A gusting breeze along +z of about a quarter of a particle's weight, seeded.
-    const double mass = scene_.kind == mysim::SystemKind::Cloth ? scene_.cloth.particle_mass
-                                                                : scene_.chain.particle_mass;
-    scene_.wind = mysim::Wind{mysim::Vec3::UnitZ(), 0.25 * 9.8 * mass, 0.8, 0.1, 0.5, 42};
-  } else {
-    scene_.wind = file_scene_.wind;
+    model_.wind = mysim::Wind{mysim::Vec3::UnitZ(), 0.25 * 9.8 * model_.mass[0], 0.8, 0.1, 0.5, 42};
   }
-  if (swing_ && scene_.kind != mysim::SystemKind::Circle) {
-    scene_.pin_motion = mysim::PinMotion{mysim::Vec3::UnitZ(), 0.2, 0.5};  // the seed's swing
-  } else {
-    scene_.pin_motion = file_scene_.pin_motion;
+  if (swing_ && togglesApply()) {
+    model_.pin_motion = mysim::PinMotion{mysim::Vec3::UnitZ(), 0.2, 0.5};  // the seed's swing
   }
   engines_.clear();
-  const mysim::Model model = mysim::buildModel(scene_);
-  const springcheck::RunConfig config = springcheck::runConfig(scene_);
   for (const std::string& name : engine_names_) {
     EngineView view;
     view.engine = name;
-    auto instance = registry_.build(name, model, config);
+    auto instance = registry_.build(name, model_, config_);
     if (instance) {
       view.system = std::move(instance->system);
       view.stepper = std::move(instance->stepper);
@@ -93,12 +85,12 @@ void ViewerSession::frameCamera() {
   const Eigen::Vector3d high = rows.leftCols<3>().colwise().maxCoeff();
   Eigen::Vector3d centre = 0.5 * (low + high);
   double size = std::max((high - low).norm(), 0.5);
-  if (scene_.kind == mysim::SystemKind::Chain || scene_.kind == mysim::SystemKind::Cloth) {
+  if (model_.kind == mysim::SystemKind::Chain || model_.kind == mysim::SystemKind::Cloth) {
     // Things hang below their pins by about their own size: look a little lower.
     centre.y() -= 0.4 * size;
     size *= 1.4;
   }
-  if (scene_.kind == mysim::SystemKind::Circle) {
+  if (model_.isCircle()) {
     size = 2.5;
     centre.setZero();
     camera_.yaw = camera_.pitch = 0.0;  // face on: the orbit lies in the x-y plane
@@ -178,7 +170,7 @@ bool ViewerSession::handleKey(char key) {
       auto it = std::find_if(catalog.begin(), catalog.end(),
                              [&](const auto& i) { return i.name == integrator_; });
       std::size_t k = it == catalog.end() ? 0 : (it - catalog.begin() + 1) % catalog.size();
-      if (scene_.kind == mysim::SystemKind::Circle) {
+      if (model_.isCircle()) {
         while (catalog[k].needs_particles) k = (k + 1) % catalog.size();
       }
       integrator_ = catalog[k].name;
@@ -201,7 +193,7 @@ std::string ViewerSession::summary() const {
   std::snprintf(t, sizeof t, "%.3f", time_);
   char step[32];
   std::snprintf(step, sizeof step, "%.4g", dt_);
-  std::string text = "scene " + scene_.name + ", t " + t + " s, mysim " + activeIntegrator() +
+  std::string text = "scene " + config_.scene_name + ", t " + t + " s, mysim " + activeIntegrator() +
                      ", dt " + step + " s, " + (paused_ ? "paused" : "running") + ", " +
                      (shaded_ ? "shaded" : "springs");
   if (togglesApply()) {
@@ -233,12 +225,12 @@ std::optional<double> ViewerSession::engineDistance() const {
 }
 
 std::optional<double> ViewerSession::penetration() const {
-  if (!scene_.sphere) return std::nullopt;
+  if (model_.colliders.empty()) return std::nullopt;
   double deepest = 0.0;
   for (const EngineView& e : engines_) {
     if (!e.system) continue;
-    const int n = static_cast<int>(e.state.y.size() / 6);
-    deepest = std::max(deepest, mysim::deepestPenetration(*scene_.sphere, e.state.y.head(3 * n)));
+    const auto rows = e.system->particleRows(e.state);
+    deepest = std::max(deepest, springcheck::penetration(model_.colliders, rows).deepest);
   }
   return deepest;
 }

@@ -11,6 +11,7 @@
 
 #include "mysim/cloth_mesh.h"
 #include "mysim/particle_system.h"
+#include "collider_drawing.h"
 #include "png_writer.h"
 #include "text.h"
 
@@ -82,51 +83,6 @@ void lookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target) {
   glTranslated(-eye.x(), -eye.y(), -eye.z());
 }
 
-// The cloth is drawn as flat triangles between nodes that rest on the sphere (at radius +
-// margin), so a triangle's middle dips below that surface by up to R - sqrt(R^2 - rho^2), rho
-// the triangle's circumradius. Drawing the true sphere would show it through the cloth as dark
-// holes where no node is inside; the sphere is drawn smaller by the largest such dip among the
-// triangles near it (docs/viewer.md). Nodes really inside still show it.
-double drawnSphereRadius(const mysim::Model& model,
-                         const Eigen::Matrix<double, Eigen::Dynamic, 6>& rows) {
-  const mysim::Sphere& sphere = *model.sphere;
-  const double surface = sphere.radius + sphere.margin;
-  if (!model.grid) return sphere.radius;
-  double dip = 0.0;
-  for (const Eigen::Vector3i& t : mysim::gridTriangles(*model.grid)) {
-    const Eigen::Vector3d a = rows.row(t[0]).head<3>(), b = rows.row(t[1]).head<3>(),
-                          c = rows.row(t[2]).head<3>();
-    if ((a - sphere.center).norm() > 1.5 * surface) continue;  // far from the sphere
-    const double area2 = (b - a).cross(c - a).norm();
-    if (area2 <= 0) continue;
-    const double rho = (b - a).norm() * (c - b).norm() * (a - c).norm() / (2 * area2);
-    dip =
-        std::max(dip, rho < surface ? surface - std::sqrt(surface * surface - rho * rho) : surface);
-  }
-  return std::max(0.5 * sphere.radius, std::min(sphere.radius, surface - dip));
-}
-
-void drawSphere(const mysim::Sphere& true_sphere, double radius) {
-  mysim::Sphere sphere = true_sphere;
-  sphere.radius = radius;
-  const int slices = 32, stacks = 16;
-  glColor3f(0.55f, 0.6f, 0.7f);
-  for (int i = 0; i < stacks; ++i) {
-    const double a0 = M_PI * i / stacks, a1 = M_PI * (i + 1) / stacks;
-    glBegin(GL_QUAD_STRIP);
-    for (int j = 0; j <= slices; ++j) {
-      const double b = 2 * M_PI * j / slices;
-      for (double a : {a0, a1}) {
-        const Eigen::Vector3d n(std::sin(a) * std::cos(b), std::cos(a), std::sin(a) * std::sin(b));
-        glNormal3d(n.x(), n.y(), n.z());
-        const Eigen::Vector3d p = sphere.center + sphere.radius * n;
-        glVertex3d(p.x(), p.y(), p.z());
-      }
-    }
-    glEnd();
-  }
-}
-
 void drawEngine(const ViewerSession& session, const EngineView& e) {
   if (!e.system) return;
   const auto rows = e.system->particleRows(e.state);
@@ -146,10 +102,8 @@ void drawEngine(const ViewerSession& session, const EngineView& e) {
     return;
   }
   const mysim::Model& model = ps->model();
-  if (model.sphere) {
-    glEnable(GL_LIGHTING);
-    drawSphere(*model.sphere, drawnSphereRadius(model, rows));
-  }
+  glEnable(GL_LIGHTING);
+  for (const mysim::Collider& c : model.colliders) drawCollider(c, model, rows);
   if (model.grid && session.shaded()) {
     mysim::Vector x(3 * rows.rows());
     for (int p = 0; p < rows.rows(); ++p) x.segment<3>(3 * p) = rows.row(p).head<3>().transpose();
@@ -301,7 +255,7 @@ void render(ViewerSession& session, const Text& text, int width, int height,
   }
   glEnd();
 
-  std::string top = session.scene().name + "    t " + format("%.2f s", session.time()) + "    dt " +
+  std::string top = session.config().scene_name + "    t " + format("%.2f s", session.time()) + "    dt " +
                     format("%.4g s", session.dt()) + "    " + rate;
   if (session.speed() < 0.99) top += "    slow motion x" + format("%.2f", session.speed());
   if (session.paused()) top += "    paused";
@@ -315,7 +269,7 @@ void render(ViewerSession& session, const Text& text, int width, int height,
     metrics += "RMS distance between the first two engines " + format("%.3g m", *d) + "    ";
   }
   if (auto p = session.penetration()) {
-    metrics += "deepest node inside the sphere " + format("%.3g mm", 1e3 * *p);
+    metrics += "deepest node inside a collider " + format("%.3g mm", 1e3 * *p);
   }
   if (!session.notice().empty()) metrics = session.notice();
   text.draw(10, 4 + text.lineHeight(), metrics, 0.75f, 0.87f, 1.0f);

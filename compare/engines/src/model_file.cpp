@@ -77,6 +77,7 @@ std::expected<void, std::string> writeModelFile(const std::string& dir, const my
             {"drag", model.drag},
             {"wind", nullptr},
             {"pin_motion", nullptr},
+            {"colliders", json::array()},
             {"sphere", nullptr},
             {"integrator",
              {{"name", config.integrator.name},
@@ -95,10 +96,12 @@ std::expected<void, std::string> writeModelFile(const std::string& dir, const my
                        {"amplitude", model.pin_motion->amplitude},
                        {"frequency", model.pin_motion->frequency}};
   }
-  if (model.sphere) {
-    j["sphere"] = {{"center", vec3(model.sphere->center)},
-                   {"radius", model.sphere->radius},
-                   {"margin", model.sphere->margin}};
+  for (const mysim::Collider& c : model.colliders) j["colliders"].push_back(describeCollider(c));
+  // Engines written for a model with at most one sphere read "sphere": kept for them, filled
+  // only when the sphere is the one collider (so such an engine never silently drops another).
+  if (model.colliders.size() == 1 && std::holds_alternative<mysim::Sphere>(model.colliders[0])) {
+    j["sphere"] = j["colliders"][0];
+    j["sphere"].erase("type");
   }
   std::error_code ec;
   fs::create_directories(dir, ec);

@@ -105,7 +105,7 @@ std::optional<ClosedFormError> closedFormError(const mysim::Model& model,
   std::vector<char> only_first_pinned(model.particleCount(), 0);
   if (!only_first_pinned.empty()) only_first_pinned[0] = 1;
   if (!chain || model.pinned != only_first_pinned || model.gravity.norm() == 0.0 || model.wind ||
-      model.pin_motion || model.sphere) {
+      model.pin_motion || !model.colliders.empty()) {
     return std::nullopt;
   }
   const double alignment = chain->direction.dot(model.gravity.normalized());

@@ -7,7 +7,7 @@ namespace springcheck {
 bool conservesMomentum(const mysim::Model& model) {
   const bool pinned =
       std::any_of(model.pinned.begin(), model.pinned.end(), [](char p) { return p != 0; });
-  return !pinned && model.drag == 0.0 && !model.wind && !model.sphere && !model.isCircle();
+  return !pinned && model.drag == 0.0 && !model.wind && model.colliders.empty() && !model.isCircle();
 }
 
 std::optional<MomentumDrift> momentumDrift(const mysim::Model& model, const mysim::RunRecord& run) {

@@ -4,12 +4,14 @@
 
 namespace springcheck {
 
-Penetration penetration(const mysim::Sphere& sphere, const mysim::ParticleRows& frame) {
+Penetration penetration(const std::vector<mysim::Collider>& colliders,
+                        Eigen::Ref<const mysim::ParticleRows> positions) {
   Penetration p;
   double total = 0.0;
-  for (int i = 0; i < frame.rows(); ++i) {
-    const double depth =
-        sphere.radius - (frame.row(i).head<3>().transpose() - sphere.center).norm();
+  for (int i = 0; i < positions.rows(); ++i) {
+    const mysim::Vec3 x = positions.row(i).head<3>().transpose();
+    double depth = 0.0;
+    for (const mysim::Collider& c : colliders) depth = std::max(depth, -signedDistance(c, x));
     if (depth <= 0.0) continue;
     ++p.count;
     total += depth;
@@ -19,10 +21,12 @@ Penetration penetration(const mysim::Sphere& sphere, const mysim::ParticleRows& 
   return p;
 }
 
-std::vector<Penetration> penetrationOverTime(const mysim::Sphere& sphere,
+std::vector<Penetration> penetrationOverTime(const std::vector<mysim::Collider>& colliders,
                                              const mysim::RunRecord& run) {
   std::vector<Penetration> series;
-  for (const mysim::ParticleRows& frame : run.frames) series.push_back(penetration(sphere, frame));
+  for (const mysim::ParticleRows& frame : run.frames) {
+    series.push_back(penetration(colliders, frame));
+  }
   return series;
 }
 

@@ -32,8 +32,8 @@ EngineMetrics engineMetrics(const mysim::Scene& scene, const mysim::Model& model
   const SagSeries sag = sagOverTime(model, r);
   m.sag_lowest = sag.lowest.back();
   if (!sag.free_middle.empty()) m.sag_free_middle = sag.free_middle.back();
-  if (model.sphere) {
-    for (const Penetration& p : penetrationOverTime(*model.sphere, r)) {
+  if (!model.colliders.empty()) {
+    for (const Penetration& p : penetrationOverTime(model.colliders, r)) {
       m.penetration_max = std::max(m.penetration_max, p.deepest);
       m.penetration_mean_max = std::max(m.penetration_mean_max, p.mean_depth);
       m.penetration_count_max = std::max(m.penetration_count_max, p.count);

@@ -155,7 +155,7 @@ std::string safeDirName(std::string engine) {
   return engine;
 }
 
-// What a reader of the tables needs to know of the model (the report draws the sphere, picks the
+// What a reader of the tables needs to know of the model (the report draws the colliders, picks the
 // energy view for undamped or damped scenes, and draws cloths as meshes).
 json modelJson(const mysim::Model& model) {
   bool spring_damping = false;
@@ -164,12 +164,9 @@ json modelJson(const mysim::Model& model) {
             {"particles", model.particleCount()},
             {"damped", model.drag > 0.0 || spring_damping},
             {"driven", model.wind.has_value() || model.pin_motion.has_value()},
-            {"sphere", json()},
+            {"colliders", json::array()},
             {"grid", json()}};
-  if (model.sphere) {
-    const mysim::Vec3& c = model.sphere->center;
-    j["sphere"] = {{"center", {c.x(), c.y(), c.z()}}, {"radius", model.sphere->radius}};
-  }
+  for (const mysim::Collider& c : model.colliders) j["colliders"].push_back(describeCollider(c));
   if (model.grid) j["grid"] = {{"rows", model.grid->rows}, {"cols", model.grid->cols}};
   return j;
 }
@@ -257,7 +254,7 @@ std::expected<void, std::string> writeComparison(const std::string& dir, const C
         series << csvField(c.runs[r].engine) << ',' << rec.times[f] << ',' << sag.lowest[f] << ',';
         if (!sag.free_middle.empty()) series << sag.free_middle[f];
         series << ',';
-        if (c.model.sphere) series << penetration(*c.model.sphere, rec.frames[f]).deepest;
+        if (!c.model.colliders.empty()) series << penetration(c.model.colliders, rec.frames[f]).deepest;
         series << ',';
         if (f < drift.total.size()) series << drift.total[f];
         series << '\n';

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "mysim/pin_motion.h"
-#include "mysim/sphere_collider.h"
+#include "mysim/collider.h"
 #include "mysim/spring.h"
 #include "mysim/spring_list.h"
 #include "mysim/types.h"
@@ -40,7 +40,7 @@ struct Model {
   double drag = 0.0;            // N s/m, viscous drag -drag * v on every particle
   std::optional<Wind> wind;
   std::optional<PinMotion> pin_motion;
-  std::optional<Sphere> sphere;
+  std::vector<Collider> colliders;  // static, frictionless; contacts resolved in this order
   std::optional<GridShape> grid;
 
   int particleCount() const { return static_cast<int>(mass.size()); }

@@ -59,7 +59,7 @@ struct Scene {
   double drag = 0.0;
   std::optional<Wind> wind;
   std::optional<PinMotion> pin_motion;
-  std::optional<Sphere> sphere;
+  std::vector<Collider> colliders;  // "sphere" (first, if given), then "colliders"
 
   IntegratorSettings integrator;
   double dt = 0.04;              // s

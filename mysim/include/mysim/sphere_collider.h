@@ -1,24 +1,29 @@
 #pragma once
-#include <vector>
+#include <optional>
 
-#include "mysim/types.h"
+#include <nlohmann/json_fwd.hpp>
+
+#include "mysim/contact.h"
 
 namespace mysim {
 
-// A static frictionless sphere. Particles found inside after a step are moved to radius + margin
-// and lose their inward normal velocity: keeping that velocity (as the seed did) re-enters the
-// sphere next step, which is the jitter the seed left open.
+class FieldReader;
+
+// A static frictionless sphere (scene: "sphere": {...} or {"type": "sphere", ...} in
+// "colliders"). Particles closer to its centre than radius + margin are put on that surface.
 struct Sphere {
+  static constexpr const char* kType = "sphere";
   Vec3 center = Vec3::Zero();
   double radius = 1.0;  // m
   double margin = 0.0;  // m, the surface particles are put back on is radius + margin
+
+  static Sphere read(FieldReader& r);  // center, radius, margin (default 1e-3 radius)
+  nlohmann::json describe() const;     // the same fields, for model files
 };
 
-// Returns how many particles were moved.
-int resolveSphereContacts(const Sphere& sphere, const std::vector<char>& pinned,
-                          Eigen::Ref<Vector> x, Eigen::Ref<Vector> v);
-
-// Deepest penetration below radius (0 if none), in m.
-double deepestPenetration(const Sphere& sphere, const Vector& x);
+// Distance from x to the sphere's surface, negative inside (m).
+double signedDistance(const Sphere& sphere, const Vec3& x);
+// The point of radius + margin nearest to x, when x is inside it.
+std::optional<SurfacePoint> contactPoint(const Sphere& sphere, const Vec3& x);
 
 }  // namespace mysim

@@ -54,15 +54,18 @@ class ViewerSession {
   void stepOnce();
   void reset();
 
-  const mysim::Scene& scene() const { return scene_; }
+  // The model the engines run (the file's, with the wind and swing toggles applied) and its
+  // run settings (the scene's, with the integrator and dt chosen).
+  const mysim::Model& model() const { return model_; }
+  const springcheck::RunConfig& config() const { return config_; }
   const std::string& sceneFile() const { return scenes_[scene_index_]; }
   const std::vector<EngineView>& engines() const { return engines_; }
   // The mysim integrator chosen (i), and the one mysim steps this scene with: they differ on the
   // circle, which takes first-order methods only and falls back to RK4.
   const std::string& integrator() const { return integrator_; }
-  const std::string& activeIntegrator() const { return scene_.integrator.name; }
+  const std::string& activeIntegrator() const { return config_.integrator.name; }
   // Wind and swing act on particles: not on the circle.
-  bool togglesApply() const { return scene_.kind != mysim::SystemKind::Circle; }
+  bool togglesApply() const { return !model_.isCircle(); }
   // What the last key did not do and why (empty when it did what it says).
   const std::string& notice() const { return notice_; }
   // One line of state, printed by the window after every key: scene, time, integrator, toggles.
@@ -78,7 +81,7 @@ class ViewerSession {
   const std::string& error() const { return error_; }
 
   // Current metrics: energy of each engine (J, if it has one), RMS node distance between the
-  // first two running engines (m), deepest node inside the sphere over engines (m).
+  // first two running engines (m), deepest node inside a collider over engines (m).
   std::optional<double> energy(const EngineView& e) const;
   std::optional<double> engineDistance() const;
   std::optional<double> penetration() const;
@@ -94,8 +97,10 @@ class ViewerSession {
   std::vector<std::string> engine_names_;
   std::string integrator_;
   double requested_dt_;
-  mysim::Scene file_scene_;  // as read from the file
-  mysim::Scene scene_;       // with the toggles and the integrator applied
+  mysim::Model file_model_;             // built from the file
+  springcheck::RunConfig file_config_;  // the file's run settings
+  mysim::Model model_;                  // with the toggles applied
+  springcheck::RunConfig config_;       // with the integrator and dt applied
   std::vector<EngineView> engines_;
   double dt_ = 0.0, time_ = 0.0, speed_ = 1.0, owed_ = 0.0;
   bool paused_ = false, shaded_ = true, wind_ = false, swing_ = false;

@@ -8,7 +8,7 @@ namespace springcheck {
 
 // How far a run's linear and angular momentum wander from their start (Erez, Tassa and Todorov
 // 2015 measure them beside energy). Only where the model conserves them: nothing outside acts on
-// the particles but uniform gravity (no pins, drag, wind or sphere). Springs act along the line
+// the particles but uniform gravity (no pins, drag, wind or colliders). Springs act along the line
 // between their ends, equal and opposite, so they conserve both; uniform gravity changes the
 // linear momentum by exactly M g t (which is taken off) and leaves the angular momentum about the
 // centre of mass alone.

@@ -1,19 +1,22 @@
 #pragma once
 #include <vector>
 
+#include "mysim/collider.h"
 #include "mysim/simulation.h"
-#include "mysim/sphere_collider.h"
 
 namespace springcheck {
 
-// Nodes inside a sphere in one frame; depths in m below the radius.
+// Nodes inside any of the model's colliders in one frame; a node's depth is how far it is inside
+// its deepest collider (minus its signed distance), in m. The one penetration measure: runs,
+// comparisons and the viewer all use it.
 struct Penetration {
   double deepest = 0.0;
   double mean_depth = 0.0;  // over penetrating nodes only (0 if none)
   int count = 0;
 };
-Penetration penetration(const mysim::Sphere& sphere, const mysim::ParticleRows& frame);
-std::vector<Penetration> penetrationOverTime(const mysim::Sphere& sphere,
+Penetration penetration(const std::vector<mysim::Collider>& colliders,
+                        Eigen::Ref<const mysim::ParticleRows> positions);
+std::vector<Penetration> penetrationOverTime(const std::vector<mysim::Collider>& colliders,
                                              const mysim::RunRecord& run);
 
 }  // namespace springcheck

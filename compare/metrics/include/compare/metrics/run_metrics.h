@@ -36,7 +36,7 @@ struct EngineMetrics {
   double sag_lowest = 0.0;                // m below the pins, last frame
   std::optional<double> sag_free_middle;  // m, last frame
   std::optional<ClosedFormError> closed_form;
-  double penetration_max = 0.0;         // m, deepest over all frames (0 without a sphere)
+  double penetration_max = 0.0;         // m, deepest over all frames (0 without colliders)
   double penetration_mean_max = 0.0;    // m, largest per-frame mean depth
   int penetration_count_max = 0;        // most nodes inside in any frame
   EnergyDrift drift;                    // per frame

@@ -1,0 +1,31 @@
+#pragma once
+#include <optional>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "mysim/contact.h"
+
+namespace mysim {
+
+class FieldReader;
+
+// A static frictionless box, axis-aligned ({"type": "box", "center": [...], "half_extents":
+// [...]} in "colliders"). A particle inside goes out through the nearest face; one outside but
+// closer than margin goes to distance margin along the line from its nearest box point (so the
+// grown surface has rounded edges and corners, as Bullet's margins do).
+struct Box {
+  static constexpr const char* kType = "box";
+  Vec3 center = Vec3::Zero();            // m
+  Vec3 half_extents = Vec3::Constant(1);  // m, each > 0
+  double margin = 0.0;                   // m
+
+  static Box read(FieldReader& r);  // center, half_extents, margin (default 1e-3 smallest half)
+  nlohmann::json describe() const;
+};
+
+// Exact signed distance to the box surface (negative inside: minus the depth below the nearest
+// face).
+double signedDistance(const Box& box, const Vec3& x);
+std::optional<SurfacePoint> contactPoint(const Box& box, const Vec3& x);
+
+}  // namespace mysim

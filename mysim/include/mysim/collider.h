@@ -1,0 +1,45 @@
+#pragma once
+// The static colliders a model holds, any number of each. A collider is a plain struct with free
+// functions (its file: mysim/<shape>_collider.h): signed distance, the contact point on its
+// surface grown by its margin, and reading from / describing to JSON. Adding a shape: its file,
+// one name in the variant below, its Bullet twin (reference/src/static_collider.cpp) and its
+// drawing (viewer/src/collider_drawing.cpp); everything else goes through this header.
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "mysim/box_collider.h"
+#include "mysim/plane_collider.h"
+#include "mysim/sphere_collider.h"
+
+namespace mysim {
+
+using Collider = std::variant<Sphere, Plane, Box>;
+
+inline const char* colliderType(const Collider& c) {
+  return std::visit([](const auto& shape) { return shape.kType; }, c);
+}
+inline double colliderMargin(const Collider& c) {
+  return std::visit([](const auto& shape) { return shape.margin; }, c);
+}
+inline double signedDistance(const Collider& c, const Vec3& x) {
+  return std::visit([&](const auto& shape) { return signedDistance(shape, x); }, c);
+}
+inline std::optional<SurfacePoint> contactPoint(const Collider& c, const Vec3& x) {
+  return std::visit([&](const auto& shape) { return contactPoint(shape, x); }, c);
+}
+
+// "sphere, plane, box": the types a scene may name.
+std::string colliderTypes();
+// One collider from a scene object whose "type" names its shape (unknown keys refused).
+Collider readCollider(FieldReader& r);
+nlohmann::json describeCollider(const Collider& c);
+
+// After a step: every free particle touching a collider goes onto its surface (applyContact),
+// colliders in the model's order. Returns how many contacts were applied.
+int resolveContacts(const std::vector<Collider>& colliders, const std::vector<char>& pinned,
+                    Eigen::Ref<Vector> x, Eigen::Ref<Vector> v);
+
+}  // namespace mysim

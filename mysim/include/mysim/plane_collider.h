@@ -1,0 +1,28 @@
+#pragma once
+#include <optional>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "mysim/contact.h"
+
+namespace mysim {
+
+class FieldReader;
+
+// A static frictionless infinite plane, solid on the side opposite its normal: the ground of a
+// cloth-drop test ({"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0]} in "colliders").
+// Particles closer than margin to it, or behind it, are put at distance margin in front.
+struct Plane {
+  static constexpr const char* kType = "plane";
+  Vec3 point = Vec3::Zero();     // m, any point of the plane
+  Vec3 normal = Vec3::UnitY();   // unit, out of the solid side
+  double margin = 1e-3;          // m
+
+  static Plane read(FieldReader& r);  // point, normal (normalised), margin (default 1 mm)
+  nlohmann::json describe() const;
+};
+
+double signedDistance(const Plane& plane, const Vec3& x);
+std::optional<SurfacePoint> contactPoint(const Plane& plane, const Vec3& x);
+
+}  // namespace mysim

@@ -12,8 +12,8 @@ Euler -- v += h a(t, x, v); x += h v -- and writes what springcheck reads back:
 
 It does what springcheck's own symplectic Euler does, in the same order, so the two agree to
 round-off: forces of gravity, drag, wind and damped springs; pinned particles put on their
-prescribed path after the step; particles found inside the sphere moved to its surface and
-stripped of their inward velocity. Copy it as the start of your own engine.
+prescribed path after the step; particles touching a collider (sphere, plane, box) moved onto
+its surface grown by its margin and stripped of their inward velocity. Copy it as the start of your own engine.
 """
 import json
 import math
@@ -22,6 +22,46 @@ import sys
 import time
 
 import numpy as np
+
+
+def contact(collider, x):
+    """Which particles touch a collider (closer than its margin, or inside), the point of its
+    surface grown by the margin each must go to, and the outward normal there
+    (docs/external-engines.md, "Colliders")."""
+    margin = collider["margin"]
+    if collider["type"] == "sphere":
+        centre = np.array(collider["center"], dtype=float)
+        surface = collider["radius"] + margin
+        d = x - centre
+        r = np.sqrt(np.einsum("ij,ij->i", d, d))
+        normal = np.where(r[:, None] > 0, d / np.maximum(r[:, None], 1e-300), np.array([0.0, 1.0, 0.0]))
+        return r < surface, centre + surface * normal, normal
+    if collider["type"] == "plane":
+        normal = np.array(collider["normal"], dtype=float)
+        distance = (x - np.array(collider["point"], dtype=float)) @ normal
+        return distance < margin, x + (margin - distance)[:, None] * normal, np.tile(normal, (len(x), 1))
+    if collider["type"] == "box":
+        centre = np.array(collider["center"], dtype=float)
+        half = np.array(collider["half_extents"], dtype=float)
+        local = x - centre
+        q = np.abs(local) - half
+        axis = np.argmax(q, axis=1)
+        nearest = centre + np.clip(local, -half, half)
+        out = x - nearest
+        d = np.sqrt(np.einsum("ij,ij->i", out, out))
+        inside = q.max(axis=1) < 0
+        touching = (d < margin) | inside
+        # Outside: along the line from the nearest box point. Inside or on the surface: out
+        # through the face of least depth.
+        face = np.zeros_like(x)
+        rows = np.arange(len(x))
+        face[rows, axis] = np.where(local[rows, axis] < 0, -1.0, 1.0)
+        normal = np.where(d[:, None] > 0, out / np.maximum(d[:, None], 1e-300), face)
+        through_face = x.copy()
+        through_face[rows, axis] = centre[axis] + face[rows, axis] * (half[axis] + margin)
+        point = np.where(d[:, None] > 0, nearest + margin * normal, through_face)
+        return touching, point, normal
+    sys.exit(f"pysim: collider type {collider['type']!r} not handled")
 
 
 def main(model_path, out_dir):
@@ -52,7 +92,7 @@ def main(model_path, out_dir):
         wind_table = np.load(os.path.join(os.path.dirname(model_path), wind["force_table"]))
         wind_direction = np.array(wind["direction"], dtype=float)
     pins = model["pin_motion"]
-    sphere = model["sphere"]
+    colliders = model["colliders"]
 
     def pin_offset(t):
         w = 2.0 * math.pi * pins["frequency"]
@@ -101,18 +141,13 @@ def main(model_path, out_dir):
         offset, velocity = pin_offset(t) if pins is not None else (0.0, 0.0)
         x[pinned] = start[pinned] + offset
         v[pinned] = velocity
-        if sphere is not None:
-            centre = np.array(sphere["center"], dtype=float)
-            surface = sphere["radius"] + sphere["margin"]
-            d = x - centre
-            r = np.sqrt(np.einsum("ij,ij->i", d, d))
-            inside = free & (r < surface)
-            if np.any(inside):
-                normal = np.where(r[inside, None] > 0, d[inside] / np.maximum(r[inside, None], 1e-300),
-                                  np.array([0.0, 1.0, 0.0]))
-                x[inside] = centre + surface * normal
-                vn = np.einsum("ij,ij->i", v[inside], normal)
-                v[inside] -= np.minimum(vn, 0.0)[:, None] * normal
+        for collider in colliders:  # in the model's order, as springcheck's engines
+            touching, point, normal = contact(collider, x)
+            touching &= free
+            if np.any(touching):
+                x[touching] = point[touching]
+                vn = np.einsum("ij,ij->i", v[touching], normal[touching])
+                v[touching] -= np.minimum(vn, 0.0)[:, None] * normal[touching]
         if not (np.all(np.isfinite(x)) and np.all(np.isfinite(v))):
             blowup = {"time": t, "reason": "a position or velocity became non-finite"}
             break

@@ -109,7 +109,7 @@ const std::vector<MetricInfo>& metricCatalog() {
       {"closed_form_error", false, "m or rel", "error against the scene's closed form"},
       {"sag_lowest", false, "m", "lowest point below the pins at the end"},
       {"sag_free_middle", false, "m", "middle of the free edge below the pins at the end"},
-      {"penetration_max", false, "m", "deepest node inside the sphere, any frame"},
+      {"penetration_max", false, "m", "deepest node inside a collider, any frame"},
       {"penetration_mean_max", false, "m", "largest per-frame mean depth of penetrating nodes"},
       {"energy_drift_max", false, "rel", "max |E(t) - E(0)| / E_ref"},
       {"energy_rise", false, "J", "largest rise of total energy above an earlier low"},

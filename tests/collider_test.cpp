@@ -1,0 +1,111 @@
+// Static colliders: each shape's signed distance and contact point against closed forms, the
+// contact normal against the gradient of the signed distance, and the scene file's list.
+//
+//   plane y = 0, normal +y        box centred at c, half extents e
+//        . x (above: no contact)       +-------+
+//   -----+------ margin                |   . x | inside: out through the nearest face
+//   ~~~~~~~~~~~~ solid                 +-------+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "mysim/collider.h"
+#include "mysim/scene_file.h"
+
+namespace mysim {
+namespace {
+
+TEST(PlaneCollider, PutsATouchingParticleAtTheMarginAndKeepsItsTangentialVelocity) {
+  const Plane ground{Vec3(0, 1, 0), Vec3::UnitY(), 0.01};
+  EXPECT_DOUBLE_EQ(signedDistance(ground, Vec3(3, 1.5, -2)), 0.5);
+  EXPECT_FALSE(contactPoint(ground, Vec3(0, 1.02, 0)));  // beyond the margin
+  Vector x = (Vector(3) << 0.3, 0.9, 0.2).finished(), v = (Vector(3) << 1, -2, 3).finished();
+  EXPECT_EQ(resolveContacts({ground}, {0}, x, v), 1);
+  EXPECT_EQ(Vec3(x), Vec3(0.3, 1.01, 0.2));
+  EXPECT_EQ(Vec3(v), Vec3(1, 0, 3));
+}
+
+TEST(BoxCollider, SignedDistanceIsExactOnEveryRegion) {
+  const Box box{Vec3(1, 2, 3), Vec3(0.5, 1, 2), 0.0};
+  EXPECT_DOUBLE_EQ(signedDistance(box, Vec3(2, 2, 3)), 0.5);               // beside a face
+  EXPECT_DOUBLE_EQ(signedDistance(box, Vec3(1.5 + 3, 3 + 4, 3)), 5.0);     // off an edge (3-4-5)
+  EXPECT_NEAR(signedDistance(box, Vec3(1.4, 2, 3)), -0.1, 1e-15);         // inside, near +x face
+  EXPECT_DOUBLE_EQ(signedDistance(box, Vec3(1, 2, 3)), -0.5);              // the centre
+  EXPECT_NEAR(signedDistance(box, Vec3(1.5 + 1, 3 + 1, 5 + 1)), std::sqrt(3.0), 1e-15);
+}
+
+TEST(BoxCollider, ContactLeavesThroughTheNearestFaceOrAlongTheLineFromTheNearestPoint) {
+  const Box box{Vec3::Zero(), Vec3(1, 1, 1), 0.1};
+  const auto inside = contactPoint(box, Vec3(0.2, 0.9, -0.3));  // nearest face: +y
+  ASSERT_TRUE(inside);
+  EXPECT_EQ(inside->point, Vec3(0.2, 1.1, -0.3));
+  EXPECT_EQ(inside->normal, Vec3::UnitY());
+  const auto corner = contactPoint(box, Vec3(1.03, 1.04, 0.5));  // 0.05 off an edge
+  ASSERT_TRUE(corner);
+  EXPECT_TRUE(corner->point.isApprox(Vec3(1 + 0.06, 1 + 0.08, 0.5), 1e-14));
+  EXPECT_FALSE(contactPoint(box, Vec3(1.2, 0, 0)));
+}
+
+// Outside each shape (but within its margin), the contact normal is the gradient of the signed
+// distance, and the contact point lies on the grown surface: distance = margin.
+TEST(Colliders, ContactNormalIsTheSignedDistanceGradientAndThePointLiesAtTheMargin) {
+  const std::vector<Collider> shapes = {Sphere{Vec3(0.1, -0.2, 0.3), 0.7, 0.2},
+                                        Plane{Vec3(0, 0.5, 0), Vec3(1, 2, 2).normalized(), 0.2},
+                                        Box{Vec3(-0.1, 0.2, 0), Vec3(0.3, 0.5, 0.4), 0.2}};
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.5, 1.5);
+  int checked = 0;
+  for (const Collider& c : shapes) {
+    for (int k = 0; k < 2000; ++k) {
+      const Vec3 x(u(rng), u(rng), u(rng));
+      const double d = signedDistance(c, x);
+      if (d <= 1e-3 || d >= colliderMargin(c)) continue;  // only the band outside, in the margin
+      const auto s = contactPoint(c, x);
+      ASSERT_TRUE(s) << colliderType(c);
+      Vec3 gradient;
+      const double h = 1e-6;
+      for (int a = 0; a < 3; ++a) {
+        const Vec3 e = h * Vec3::Unit(a);
+        gradient[a] = (signedDistance(c, x + e) - signedDistance(c, x - e)) / (2 * h);
+      }
+      EXPECT_LT((s->normal - gradient).norm(), 1e-6) << colliderType(c);
+      EXPECT_NEAR(signedDistance(c, s->point), colliderMargin(c), 1e-12) << colliderType(c);
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 300);  // the band was sampled for every shape
+}
+
+TEST(Colliders, SceneFileReadsEveryTypeAfterTheSeedsSphere) {
+  auto scene = parseScene(R"({
+    "system": {"type": "particles", "particles": [{"position": [0, 1, 0], "mass": 1}]},
+    "sphere": {"center": [0, 0, 0], "radius": 0.5},
+    "colliders": [{"type": "plane", "point": [0, -1, 0], "normal": [0, 2, 0]},
+                  {"type": "box", "center": [2, 0, 0], "half_extents": [1, 1, 1]}],
+    "integrator": {"dt": 0.01, "duration": 0.1}})",
+                          "colliders.json");
+  ASSERT_TRUE(scene) << scene.error();
+  ASSERT_EQ(scene->colliders.size(), 3u);
+  EXPECT_STREQ(colliderType(scene->colliders[0]), "sphere");
+  EXPECT_EQ(std::get<Plane>(scene->colliders[1]).normal, Vec3::UnitY());  // normalised
+  EXPECT_DOUBLE_EQ(std::get<Box>(scene->colliders[2]).margin, 1e-3);     // 1e-3 smallest half
+}
+
+TEST(Colliders, SceneFileRefusesAnUnknownTypeAndABadBoxNamingTheField) {
+  const std::string head = R"({"system": {"type": "particles", "particles": [{"position": [0, 1, 0], "mass": 1}]},
+    "integrator": {"dt": 0.01, "duration": 0.1}, "colliders": )";
+  auto unknown = parseScene(head + R"([{"type": "cone"}]})", "c.json");
+  ASSERT_FALSE(unknown);
+  EXPECT_NE(unknown.error().find("colliders[0].type"), std::string::npos) << unknown.error();
+  EXPECT_NE(unknown.error().find("sphere, plane, box"), std::string::npos) << unknown.error();
+  auto flat = parseScene(head + R"([{"type": "box", "center": [0, 0, 0], "half_extents": [1, 0, 1]}]})",
+                         "c.json");
+  ASSERT_FALSE(flat);
+  EXPECT_NE(flat.error().find("colliders[0].half_extents"), std::string::npos) << flat.error();
+  auto extra = parseScene(head + R"([{"type": "plane", "point": [0, 0, 0], "radius": 1}]})", "c.json");
+  ASSERT_FALSE(extra);
+  EXPECT_NE(extra.error().find("colliders[0].radius"), std::string::npos) << extra.error();
+}
+
+}  // namespace
+}  // namespace mysim

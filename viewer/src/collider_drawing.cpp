@@ -61,7 +61,8 @@ void drawSquare(const Eigen::Vector3d& centre, const Eigen::Vector3d& n, double 
   const Eigen::Vector3d u = n.unitOrthogonal(), w = n.cross(u);
   glNormal3d(n.x(), n.y(), n.z());
   glBegin(GL_QUADS);
-  for (const auto& [a, b] : {std::pair{-1, -1}, std::pair{1, -1}, std::pair{1, 1}, std::pair{-1, 1}}) {
+  for (const auto& [a, b] :
+       {std::pair{-1, -1}, std::pair{1, -1}, std::pair{1, 1}, std::pair{-1, 1}}) {
     const Eigen::Vector3d p = centre + half * (a * u + b * w);
     glVertex3d(p.x(), p.y(), p.z());
   }
@@ -84,8 +85,28 @@ void draw(const mysim::Plane& plane, const mysim::Model&,
   drawSquare(foot, plane.normal, std::max(1.0, (high - low).norm()));
 }
 
-void draw(const mysim::Box& box, const mysim::Model&,
-          const Eigen::Matrix<double, Eigen::Dynamic, 6>&) {
+// How far the cloth's flat triangles cut into a box where they fold over its edges: the deepest
+// triangle centroid or edge midpoint inside it. The box is drawn inset by that much, so its
+// edges do not show through a cloth whose nodes all lie outside (as the sphere is drawn smaller).
+double boxInset(const mysim::Box& box, const mysim::Model& model,
+                const Eigen::Matrix<double, Eigen::Dynamic, 6>& rows) {
+  if (!model.grid) return 0.0;
+  double inset = 0.0;
+  for (const Eigen::Vector3i& t : mysim::gridTriangles(*model.grid)) {
+    const Eigen::Vector3d a = rows.row(t[0]).head<3>(), b = rows.row(t[1]).head<3>(),
+                          c = rows.row(t[2]).head<3>();
+    for (const Eigen::Vector3d& p : {Eigen::Vector3d((a + b + c) / 3), Eigen::Vector3d((a + b) / 2),
+                                     Eigen::Vector3d((b + c) / 2), Eigen::Vector3d((c + a) / 2)}) {
+      inset = std::max(inset, -mysim::signedDistance(box, p));
+    }
+  }
+  return std::min(inset, 0.5 * box.half_extents.minCoeff());
+}
+
+void draw(const mysim::Box& true_box, const mysim::Model& model,
+          const Eigen::Matrix<double, Eigen::Dynamic, 6>& rows) {
+  mysim::Box box = true_box;
+  box.half_extents.array() -= boxInset(true_box, model, rows);
   // Each face as a square scaled along its two in-plane axes.
   for (int axis = 0; axis < 3; ++axis) {
     for (double side : {-1.0, 1.0}) {
@@ -94,7 +115,8 @@ void draw(const mysim::Box& box, const mysim::Model&,
       const int u = (axis + 1) % 3, w = (axis + 2) % 3;
       glNormal3d(n.x(), n.y(), n.z());
       glBegin(GL_QUADS);
-      for (const auto& [a, b] : {std::pair{-1, -1}, std::pair{1, -1}, std::pair{1, 1}, std::pair{-1, 1}}) {
+      for (const auto& [a, b] :
+           {std::pair{-1, -1}, std::pair{1, -1}, std::pair{1, 1}, std::pair{-1, 1}}) {
         Eigen::Vector3d p = box.center + box.half_extents[axis] * n;
         p[u] += a * box.half_extents[u];
         p[w] += b * box.half_extents[w];

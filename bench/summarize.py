@@ -43,10 +43,13 @@ def main(bench_json, memory_json, baseline_json, out_csv, *equal_accuracy):
     one = runs["BM_ClothForceOneThread/256"]["real_time"]
     two = runs["BM_ClothForce/256"]["real_time"]
     add("force evaluation 256x256: 2 threads over 1", one / two, "x")
-    for name in ("euler", "trapezoidal", "rk4", "symplectic-euler", "verlet", "backward-euler", "dopri5"):
-        add(f"mysim {name} step, 32x32", runs[f"BM_MysimStep/{name}/32"]["real_time"], "us")
-    for engine in ("bullet-deformable", "bullet-implicit", "bullet-classic"):
-        add(f"{engine} step, 32x32", runs[f"BM_BulletStep/{engine}/32"]["real_time"], "us")
+    # Every integrator and engine the benchmark registered (from the catalogues), in its order.
+    for key in runs:
+        if key.startswith("BM_MysimStep/") and key.endswith("/32"):
+            add(f"mysim {key.split('/')[1]} step, 32x32", runs[key]["real_time"], "us")
+    for key in runs:
+        if key.startswith("BM_BulletStep/") and key.endswith("/32"):
+            add(f"{key.split('/')[1]} step, 32x32", runs[key]["real_time"], "us")
     se = runs["BM_MysimStep/symplectic-euler/32"]["real_time"]
     de = runs["BM_BulletStep/bullet-deformable/32"]["real_time"]
     ratio = de / se

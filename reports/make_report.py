@@ -30,7 +30,7 @@ class Context:
     def __init__(self, manifest):
         self.manifest = manifest
         names = [e["name"] for c in manifest["comparisons"] for e in c["engines"]]
-        self.styles = StyleTable(n for n in names if not n.startswith("mysim"))
+        self.styles = StyleTable(manifest.get("series", []), (n for n in names if not n.startswith("mysim")))
         self.numbers = {}
 
     def page_of(self, key):

@@ -9,21 +9,15 @@ PAGE_SIZE = (11.69, 8.27)
 # the caption and the stamp below.
 PLOT_RECT = (0.06, 0.22, 0.97, 0.88)
 
-# One row per built-in series. mysim's integrators keep their colours whatever engine name they
-# come under ("mysim" with the scene's integrator, or "mysim:NAME"); Bullet's engines are set
-# apart by their markers (crosses and stars) as well as colour.
-STYLES = {
-    "mysim:euler": ("#d62728", "v"),
-    "mysim:trapezoidal": ("#ff7f0e", "<"),
-    "mysim:rk4": ("#1f77b4", "o"),
-    "mysim:symplectic-euler": ("#2ca02c", "s"),
-    "mysim:verlet": ("#17becf", "D"),
-    "mysim:backward-euler": ("#9467bd", "^"),
-    "mysim:dopri5": ("#8c564b", "p"),
-    "bullet-deformable": ("#bcbd22", "X"),
-    "bullet-implicit": ("#e377c2", "P"),
-    "bullet-classic": ("#7f7f7f", "*"),
-}
+# The built-in series' styles, dealt in the order the manifest lists them ("series", from the
+# C++ catalogues): mysim's integrators from the first palette (they keep their colours whatever
+# engine name they come under, "mysim" with the scene's integrator or "mysim:NAME"), the other
+# built-in engines (Bullet's) from the second, set apart by their markers (crosses and stars).
+MYSIM_PALETTE = [("#d62728", "v"), ("#ff7f0e", "<"), ("#1f77b4", "o"), ("#2ca02c", "s"),
+                 ("#17becf", "D"), ("#9467bd", "^"), ("#8c564b", "p"), ("#393b79", "d"),
+                 ("#637939", "H"), ("#843c39", ">"), ("#7b4173", "8"), ("#3182bd", "<")]
+ENGINE_PALETTE = [("#bcbd22", "X"), ("#e377c2", "P"), ("#7f7f7f", "*"), ("#9c9ede", "x"),
+                  ("#e7969c", "+")]
 # The user's own engines, in the order of their names (the same in every page of one report).
 EXTERNAL_STYLES = [("#000000", "h"), ("#a0522d", "8"), ("#006400", "d"), ("#00008b", ">"),
                    ("#8b008b", "H"), ("#b8860b", "1")]
@@ -31,10 +25,22 @@ EXTERNAL_STYLES = [("#000000", "h"), ("#a0522d", "8"), ("#006400", "d"), ("#0000
 LINESTYLES = ["-", "--", ":", "-."]
 
 
+def builtin_styles(series):
+    """key -> (colour, marker) for the manifest's built-in series, each kind from its palette."""
+    styles, dealt = {}, {"mysim": 0, "other": 0}
+    for s in series:
+        kind = "mysim" if s["kind"] == "mysim" else "other"
+        palette = MYSIM_PALETTE if kind == "mysim" else ENGINE_PALETTE
+        styles[s["key"]] = palette[dealt[kind] % len(palette)]
+        dealt[kind] += 1
+    return styles
+
+
 class StyleTable:
-    def __init__(self, external_names=()):
+    def __init__(self, series=(), external_names=()):
+        self.builtin = builtin_styles(series)
         self.external = {name: EXTERNAL_STYLES[i % len(EXTERNAL_STYLES)]
-                         for i, name in enumerate(sorted(set(external_names) - set(STYLES)))}
+                         for i, name in enumerate(sorted(set(external_names) - set(self.builtin)))}
 
     def key(self, engine, integrator=""):
         """The style key of a series: 'mysim:rk4' for mysim (whatever its name), else the engine."""
@@ -50,8 +56,8 @@ class StyleTable:
 
     def of(self, key):
         """(colour, marker) of a series key; unknown keys get the next external style."""
-        if key in STYLES:
-            return STYLES[key]
+        if key in self.builtin:
+            return self.builtin[key]
         if key not in self.external:
             self.external[key] = EXTERNAL_STYLES[len(self.external) % len(EXTERNAL_STYLES)]
         return self.external[key]

@@ -64,12 +64,8 @@ inline std::unique_ptr<Integrator> integratorNamed(const std::string& name,
   return std::move(makeIntegrator(s).value());
 }
 
-// Integrators that take a particle system: all of them.
-inline const std::vector<std::string>& particleIntegrators() {
-  static const std::vector<std::string> names = {
-      "euler", "trapezoidal", "rk4", "symplectic-euler", "verlet", "backward-euler", "dopri5"};
-  return names;
-}
+// Integrators that take a particle system: every one of the catalogue.
+inline std::vector<std::string> particleIntegrators() { return integratorNames(); }
 
 // Runs a scene in mysim with its own integrator, step and duration.
 inline RunRecord simulateScene(const Scene& scene) {

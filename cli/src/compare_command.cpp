@@ -34,7 +34,7 @@ int compare(const CompareOptions& o) {
     return kBadInput;
   }
   const std::vector<std::string> engines =
-      o.engines.empty() ? registry->names() : splitList(o.engines);
+      o.engines.empty() ? registry->names() : registry->expand(splitList(o.engines));
   auto comparison = compareScene(*registry, *scene, engines, o.timing);
   if (!comparison) {
     std::cerr << "error: " << comparison.error() << '\n';
@@ -64,7 +64,7 @@ void addCompareCommand(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand("compare", "Run a scene in several engines and compare");
   cmd->add_option("scene", o->scene_path, "Scene file (JSON)")->required();
   cmd->add_option("--engines", o->engines,
-                  "Comma-separated engines (default: every engine, your own included)");
+                  "Comma-separated engines (default: every engine, your own included; all: every engine with mysim once per integrator; all-fixed-step: the same without adaptive ones)");
   addEnginesFileOption(cmd, o->engines_files);
   cmd->add_option("--out", o->out, "Output directory (default out/compare/SCENE)");
   addTimingOptions(cmd, o->timing, 1);

@@ -1,4 +1,6 @@
+#include <cmath>
 #include <iostream>
+#include <sstream>
 #include <memory>
 
 #include "commands.h"
@@ -12,6 +14,18 @@ struct ListOptions {
   std::vector<std::string> engines_files;
 };
 
+// ", stable for h w_max < 2" from the catalogue's undamped limit.
+std::string stabilityText(const mysim::IntegratorInfo& info) {
+  const std::optional<double> c = info.stable_h_omega(0.0);
+  if (!c) return "";
+  if (std::isinf(*c)) return ", stable at any step";
+  if (*c == 0.0) return ", unstable without damping";
+  std::ostringstream s;
+  s.precision(3);
+  s << ", stable for h w_max < " << *c;
+  return s.str();
+}
+
 int listAll(const ListOptions& o) {
   const std::optional<EngineRegistry> registry = makeRegistry(o.engines_files);
   if (!registry) return kBadInput;
@@ -19,7 +33,12 @@ int listAll(const ListOptions& o) {
   std::cout << "Integrators:\n";
   for (const mysim::IntegratorInfo& info : mysim::integratorCatalog()) {
     std::cout << "  " << info.name << (info.alias.empty() ? "" : " (" + info.alias + ")") << "  "
-              << info.description << '\n';
+              << info.description << "; " << mysim::familyName(info.family) << ", order "
+              << info.order << stabilityText(info) << '\n';
+    for (const mysim::IntegratorParameter& p : info.parameters) {
+      std::cout << "      integrator." << p.name << " (default " << p.fallback << "): " << p.meaning
+                << '\n';
+    }
   }
   std::cout << "Engines:\n";
   for (const Engine& e : registry->engines()) {

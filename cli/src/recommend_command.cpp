@@ -39,8 +39,7 @@ std::string sweepAroundScene(const EngineRegistry& registry, const std::string& 
   json spec = {{"name", "recommend_" + scene.name},
                {"scenes", {fs::absolute(path).lexically_normal().string()}},
                {"engines", registry.names()},
-               {"integrators",
-                {"euler", "trapezoidal", "rk4", "symplectic-euler", "verlet", "backward-euler"}},
+               {"integrators", mysim::integratorNames(true)},
                {"dt", {4 * scene.dt, 2 * scene.dt, scene.dt, scene.dt / 2, scene.dt / 4}},
                {"sample_interval", 4 * scene.dt},
                {"reference", {{"integrator", "rk4"}, {"refine", 16}}}};

@@ -37,7 +37,13 @@ int report(const std::string& results, const std::string& out) {
   }
   const ReportStamp stamp{SPRINGCHECK_VERSION, SPRINGCHECK_COMMIT,
                           "springcheck report --results " + results + " --out " + out, dataDir()};
-  auto manifest = reportManifest(results, stamp);
+  // Every built-in engine spec, mysim once per integrator: the series with fixed styles.
+  const EngineRegistry builtin;
+  std::vector<ReportSeries> series;
+  for (const std::string& spec : builtin.specs()) {
+    series.push_back({spec, builtin.find(spec.substr(0, spec.find(':')))->kind});
+  }
+  auto manifest = reportManifest(results, stamp, series);
   if (!manifest) {
     std::cerr << "error: " << manifest.error() << '\n';
     return kBadInput;

@@ -21,18 +21,15 @@ namespace {
 
 struct StabilityOptions {
   std::string scene;
-  // Scene maps: every engine that steps with a fixed step (dopri5 picks its own).
-  std::vector<std::string> engines = {
-      "mysim:euler",   "mysim:trapezoidal",    "mysim:rk4",         "mysim:symplectic-euler",
-      "mysim:verlet",  "mysim:backward-euler", "bullet-deformable", "bullet-implicit",
-      "bullet-classic"};
+  // Scene maps: every engine that steps with a fixed step (dopri5 picks its own), mysim once
+  // per fixed-step integrator of the catalogue (EngineRegistry::expand).
+  std::vector<std::string> engines = {"all-fixed-step"};
   std::vector<int> classic_iterations = {1, 10, 50};
   std::vector<double> mass_ratios = {1, 100, 1e4};
   long steps = 4000;
   bool whole_run = false;
   std::vector<std::string> engines_files;
-  std::vector<std::string> integrators = {"euler",  "trapezoidal",   "rk4", "symplectic-euler",
-                                          "verlet", "backward-euler"};
+  std::vector<std::string> integrators = mysim::integratorNames(true);
   std::vector<double> stiffness = {10, 100, 1e3, 1e4, 1e5};
   std::vector<double> masses = {1e-6, 1e-2, 1.0};
   double damping_ratio = 0.05;
@@ -129,7 +126,8 @@ std::expected<void, std::string> writeExtremes(const EngineRegistry& registry,
 // theory line c / w_max: out/stability_SCENE.csv.
 int sceneStabilityMaps(const StabilityOptions& o, const EngineRegistry& registry,
                        const mysim::Scene& scene, int jobs) {
-  for (const std::string& engine : o.engines) {
+  const std::vector<std::string> engines = registry.expand(o.engines);
+  for (const std::string& engine : engines) {
     if (auto ok = registry.check(engine); !ok) {
       std::cerr << "error: --engines: " << ok.error() << '\n';
       return kBadInput;
@@ -141,7 +139,7 @@ int sceneStabilityMaps(const StabilityOptions& o, const EngineRegistry& registry
     double k, ratio;
   };
   std::vector<Cell> cells;
-  for (const std::string& engine : o.engines) {
+  for (const std::string& engine : engines) {
     const std::vector<int> passes =
         engine == "bullet-classic" ? o.classic_iterations : std::vector<int>{0};
     for (int p : passes) {
@@ -316,7 +314,7 @@ void addStabilityCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--scene", o->scene,
                   "Scene: every engine's stability map on it across --stiffness and "
                   "--mass-ratios, with the w_max theory line (default: the built-in oscillator)");
-  cmd->add_option("--engines", o->engines, "Scene maps: engines")
+  cmd->add_option("--engines", o->engines, "Scene maps: engines (all-fixed-step: every one)")
       ->delimiter(',')
       ->capture_default_str();
   addEnginesFileOption(cmd, o->engines_files);

@@ -1,5 +1,8 @@
 #include "mysim/integrator.h"
 
+#include <cmath>
+#include <limits>
+
 namespace mysim {
 
 StepCounts& StepCounts::operator+=(const StepCounts& o) {
@@ -12,25 +15,73 @@ StepCounts& StepCounts::operator+=(const StepCounts& o) {
   return *this;
 }
 
+namespace {
+
+using Limit = std::optional<double>;
+constexpr double kUnconditional = std::numeric_limits<double>::infinity();
+
+// Stability edges on the oscillator's eigenvalues h lambda = h w (-zeta +- i):
+//   forward Euler |1 + h lambda| < 1  <=>  h w < 2 zeta (exactly);
+//   symplectic Euler and velocity Verlet (undamped): h w < 2;
+//   RK4 on the imaginary axis: h w < 2 sqrt(2);
+//   backward Euler |1 / (1 - h lambda)| < 1 for every h > 0.
+// Heun's |1 + z + z^2/2| exceeds 1 on the whole imaginary axis (undamped: unstable at any h, 0),
+// with no short closed form under damping: none.
+const std::vector<IntegratorParameter> kBackwardEulerParameters = {
+    {"cg_tolerance", "1e-8", "CG relative residual of the linear solve"},
+    {"cg_max_iterations", "1000", "CG iteration limit per step"},
+    {"cg_preconditioner", "auto", "auto, jacobi, block-jacobi or ssor"}};
+const std::vector<IntegratorParameter> kAdaptiveParameters = {
+    {"abs_tolerance", "1e-6", "per-component absolute error bound per step"},
+    {"rel_tolerance", "1e-6", "relative error bound per step"}};
+
+}  // namespace
+
 const std::vector<IntegratorInfo>& integratorCatalog() {
   using S = const IntegratorSettings&;
+  using F = IntegratorFamily;
   static const std::vector<IntegratorInfo> catalog = {
-      {"euler", "e", "forward Euler, order 1", false, [](S) { return makeForwardEuler(); }},
-      {"trapezoidal", "t", "trapezoidal rule (Heun), order 2", false,
-       [](S) { return makeTrapezoidal(); }},
-      {"rk4", "r", "classical Runge-Kutta, order 4", false, [](S) { return makeRk4(); }},
-      {"symplectic-euler", "", "semi-implicit Euler, order 1, symplectic", true,
-       [](S) { return makeSymplecticEuler(); }},
-      {"verlet", "", "velocity Verlet, order 2, symplectic", true,
-       [](S) { return makeVelocityVerlet(); }},
-      {"backward-euler", "", "Baraff-Witkin implicit Euler (1 Newton step, CG), order 1", true,
+      {"euler", "e", "forward Euler", false, [](S) { return makeForwardEuler(); }, 1,
+       F::Explicit, [](double zeta) { return Limit(2 * zeta); }, {}},
+      {"trapezoidal", "t", "trapezoidal rule (Heun)", false,
+       [](S) { return makeTrapezoidal(); }, 2, F::Explicit,
+       [](double zeta) { return zeta == 0.0 ? Limit(0.0) : Limit(); }, {}},
+      {"rk4", "r", "classical Runge-Kutta", false, [](S) { return makeRk4(); }, 4,
+       F::Explicit, [](double) { return Limit(2 * std::sqrt(2.0)); }, {}},
+      {"symplectic-euler", "", "semi-implicit Euler", true,
+       [](S) { return makeSymplecticEuler(); }, 1, F::Symplectic,
+       [](double) { return Limit(2.0); }, {}},
+      {"verlet", "", "velocity Verlet", true,
+       [](S) { return makeVelocityVerlet(); }, 2, F::Symplectic,
+       [](double) { return Limit(2.0); }, {}},
+      {"backward-euler", "", "Baraff-Witkin implicit Euler (1 Newton step, CG)", true,
        [](S s) {
          return makeBackwardEuler(s.cg_tolerance, s.cg_max_iterations, s.preconditioner);
-       }},
-      {"dopri5", "", "adaptive Dormand-Prince 5(4), abs/rel tolerance", false,
-       [](S s) { return makeDormandPrince(s.abs_tolerance, s.rel_tolerance); }, true},
+       },
+       1, F::Implicit, [](double) { return Limit(kUnconditional); }, kBackwardEulerParameters},
+      {"dopri5", "", "Dormand-Prince 5(4), abs/rel tolerance", false,
+       [](S s) { return makeDormandPrince(s.abs_tolerance, s.rel_tolerance); }, 5, F::Adaptive,
+       [](double) { return Limit(); }, kAdaptiveParameters},
   };
   return catalog;
+}
+
+std::vector<std::string> integratorNames(bool fixed_step_only) {
+  std::vector<std::string> names;
+  for (const IntegratorInfo& info : integratorCatalog()) {
+    if (!(fixed_step_only && info.adaptive())) names.push_back(info.name);
+  }
+  return names;
+}
+
+const char* familyName(IntegratorFamily family) {
+  switch (family) {
+    case IntegratorFamily::Explicit: return "explicit";
+    case IntegratorFamily::Symplectic: return "symplectic";
+    case IntegratorFamily::Implicit: return "implicit";
+    case IntegratorFamily::Adaptive: return "adaptive";
+  }
+  return "?";
 }
 
 const char* preconditionerName(CgPreconditioner preconditioner) {

@@ -40,6 +40,18 @@ std::string bulletIntegratorName(BulletEngine engine, int classic_iterations) {
   return "?";
 }
 
+const char* bulletScheme(BulletEngine engine) {
+  switch (engine) {
+    case BulletEngine::Deformable:
+      return "symplectic-euler";
+    case BulletEngine::Implicit:
+      return "backward-euler";
+    case BulletEngine::Classic:
+      return "";
+  }
+  return "";
+}
+
 const mysim::EngineSection& bulletSceneSection() {
   static const mysim::EngineSection section = {
       "bullet",

@@ -8,6 +8,7 @@ Engine bulletEngine(reference::BulletEngine which) {
   e.name = reference::bulletEngineName(which);
   e.kind = "bullet";
   e.description = reference::bulletEngineDescription(which);
+  e.scheme = reference::bulletScheme(which);
   e.build = [which](const mysim::Model& model,
                     const RunConfig& config) -> std::expected<EngineInstance, EngineError> {
     const reference::BulletSettings settings = reference::bulletSettings(

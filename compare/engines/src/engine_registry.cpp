@@ -50,6 +50,40 @@ std::vector<std::string> EngineRegistry::names() const {
   return names;
 }
 
+std::vector<std::string> EngineRegistry::specs(bool fixed_step_only) const {
+  std::vector<std::string> specs;
+  for (const Engine& e : engines_) {
+    if (!e.takes_integrator) {
+      specs.push_back(e.name);
+      continue;
+    }
+    for (const std::string& integrator : mysim::integratorNames(fixed_step_only)) {
+      specs.push_back(e.name + ":" + integrator);
+    }
+  }
+  return specs;
+}
+
+std::vector<std::string> EngineRegistry::expand(const std::vector<std::string>& given) const {
+  std::vector<std::string> out;
+  for (const std::string& spec : given) {
+    if (spec == "all" || spec == "all-fixed-step") {
+      for (std::string& s : specs(spec != "all")) out.push_back(std::move(s));
+    } else {
+      out.push_back(spec);
+    }
+  }
+  return out;
+}
+
+std::string EngineRegistry::schemeOf(const std::string& spec,
+                                     const std::string& scene_integrator) const {
+  if (const auto colon = spec.find(':'); colon != std::string::npos) return spec.substr(colon + 1);
+  const Engine* e = find(spec);
+  if (!e) return "";
+  return e->takes_integrator ? scene_integrator : e->scheme;
+}
+
 const Engine* EngineRegistry::find(const std::string& name) const {
   for (const Engine& e : engines_) {
     if (e.name == name) return &e;

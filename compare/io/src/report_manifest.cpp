@@ -17,10 +17,9 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-// The engines the main job compares on its energy scenes (scripts/run-suite.sh).
-constexpr const char* kEnergyEngines =
-    "mysim:euler,mysim:trapezoidal,mysim:rk4,mysim:symplectic-euler,mysim:verlet,"
-    "mysim:backward-euler,mysim:dopri5,bullet-deformable,bullet-implicit,bullet-classic";
+// The engines the main job compares on its energy scenes (scripts/run-suite.sh): every engine,
+// mysim once per integrator (EngineRegistry::expand).
+constexpr const char* kEnergyEngines = "all";
 
 std::vector<fs::path> filesIn(const fs::path& dir, const std::string& prefix,
                               const std::string& extension) {
@@ -126,7 +125,8 @@ std::expected<json, std::string> comparisons(const fs::path& results) {
 }  // namespace
 
 std::expected<json, std::string> reportManifest(const std::string& results_dir,
-                                                const ReportStamp& stamp) {
+                                                const ReportStamp& stamp,
+                                                const std::vector<ReportSeries>& series) {
   const fs::path results(results_dir);
   const std::string r = results_dir, d = stamp.data_dir;
   json m = {{"stamp",
@@ -136,7 +136,9 @@ std::expected<json, std::string> reportManifest(const std::string& results_dir,
               {"date", utcNow()},
               {"machine", machine()}}},
             {"results", r},
+            {"series", json::array()},
             {"missing", json::array()}};
+  for (const ReportSeries& s : series) m["series"].push_back({{"key", s.key}, {"kind", s.kind}});
   auto missing = [&](const std::string& input, const std::string& command,
                      const std::string& pages) {
     m["missing"].push_back({{"input", input}, {"command", command}, {"pages", pages}});

@@ -29,12 +29,11 @@ mysim::Scene oscillatorScene(double stiffness, double mass, double damping_ratio
 
 std::optional<double> theoryStableStep(const std::string& integrator, double stiffness, double mass,
                                        double damping_ratio) {
-  const double w = std::sqrt(stiffness / mass);
-  if (integrator == "symplectic-euler" || integrator == "verlet") return 2.0 / w;
-  if (integrator == "rk4") return 2.0 * std::sqrt(2.0) / w;
-  if (integrator == "euler") return 2.0 * damping_ratio / w;
-  if (integrator == "backward-euler") return std::numeric_limits<double>::infinity();
-  return std::nullopt;
+  const mysim::IntegratorInfo* info = mysim::findIntegrator(integrator);
+  if (!info) return std::nullopt;
+  const std::optional<double> h_omega = info->stable_h_omega(damping_ratio);
+  if (!h_omega) return std::nullopt;
+  return *h_omega / std::sqrt(stiffness / mass);
 }
 
 namespace {
@@ -109,18 +108,11 @@ StabilityLimit oscillatorStability(const EngineRegistry& registry, const std::st
 }
 
 std::optional<double> stepLimitConstant(const std::string& integrator) {
-  if (integrator == "symplectic-euler" || integrator == "verlet") return 2.0;
-  if (integrator == "rk4") return 2.0 * std::sqrt(2.0);
-  if (integrator == "backward-euler") return std::numeric_limits<double>::infinity();
-  return std::nullopt;
-}
-
-std::string schemeOf(const std::string& engine, const std::string& scene_integrator) {
-  if (engine == "mysim") return scene_integrator;
-  if (engine.starts_with("mysim:")) return engine.substr(6);
-  if (engine == "bullet-deformable") return "symplectic-euler";  // docs/reference.md
-  if (engine == "bullet-implicit") return "backward-euler";      // one Newton step, linearised
-  return engine;
+  const mysim::IntegratorInfo* info = mysim::findIntegrator(integrator);
+  if (!info) return std::nullopt;
+  const std::optional<double> c = info->stable_h_omega(0.0);
+  if (c && *c == 0.0) return std::nullopt;  // unstable at any step without damping
+  return c;
 }
 
 mysim::Model stressedModel(const mysim::Model& model, double stiffness, double mass_ratio) {
@@ -177,7 +169,7 @@ StabilityLimit sceneStability(const EngineRegistry& registry, const mysim::Model
   limit.w_max = w_max;
   limit.mass = model.mass.size() > 0 ? model.mass.maxCoeff() : 0.0;
   limit.stiffness = model.springs.empty() ? 0.0 : model.springs.front().stiffness;
-  if (auto c = stepLimitConstant(schemeOf(engine, config.integrator.name)); c && w_max > 0) {
+  if (auto c = stepLimitConstant(registry.schemeOf(engine, config.integrator.name)); c && w_max > 0) {
     limit.theory = *c / w_max;
   }
   return limit;

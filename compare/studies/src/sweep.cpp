@@ -159,7 +159,7 @@ std::vector<SweepCase> expandSweep(const SweepSpec& spec) {
             takes_integrator ? spec.integrators : std::vector<std::string>{"-"};
         for (const std::string& integrator : integrators) {
           const mysim::IntegratorInfo* info = mysim::findIntegrator(integrator);
-          const std::vector<double> tolerances = info && info->adaptive && !spec.tolerances.empty()
+          const std::vector<double> tolerances = info && info->adaptive() && !spec.tolerances.empty()
                                                      ? spec.tolerances
                                                      : std::vector<double>{0.0};
           for (double tolerance : tolerances) {

@@ -2,6 +2,7 @@
 #include <expected>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -53,17 +54,39 @@ class Integrator {
   virtual StepCounts step(OdeSystem& system, State& state, double h) = 0;
 };
 
-// One row per integrator: adding one takes its own file (a make... factory) and a row here.
+// A setting of the scene's "integrator" section that an integrator reads.
+struct IntegratorParameter {
+  std::string name;      // the scene field, integrator.NAME
+  std::string fallback;  // its default, as a scene would write it
+  std::string meaning;
+};
+
+// How an integrator's method is classed, for tables and the report's styles.
+enum class IntegratorFamily { Explicit, Symplectic, Implicit, Adaptive };
+const char* familyName(IntegratorFamily family);
+
+// One row per integrator: everything any study, table, benchmark or test asks of a method, so
+// adding one takes its own file (a make... factory) and a row here, nothing else.
 struct IntegratorInfo {
   std::string name;
   std::string alias;  // the seed's one-letter name, if any
   std::string description;
   bool needs_particles;  // second-order methods need a ParticleSystem (x' = v, v' = a)
   std::function<std::unique_ptr<Integrator>(const IntegratorSettings&)> make;
+  int order = 1;  // global order of accuracy in h
+  IntegratorFamily family = IntegratorFamily::Explicit;
+  // Theory's largest stable h w on the linear oscillator u'' + 2 zeta w u' + w^2 u = 0 at damping
+  // ratio zeta (the edge of the method's stability region along the eigenvalues w(-zeta +- i)):
+  // infinity when stable at any step, none when theory gives no closed form.
+  std::function<std::optional<double>(double zeta)> stable_h_omega;
+  std::vector<IntegratorParameter> parameters;
   // Picks its own internal steps to meet abs/rel tolerance: the tolerance is its accuracy knob.
-  bool adaptive = false;
+  bool adaptive() const { return family == IntegratorFamily::Adaptive; }
 };
 const std::vector<IntegratorInfo>& integratorCatalog();
+// The catalogue's names, in its order; without adaptive ones when fixed_step_only (the studies
+// that choose the step themselves).
+std::vector<std::string> integratorNames(bool fixed_step_only = false);
 const IntegratorInfo* findIntegrator(std::string_view name);  // by name or alias
 
 // Canonical name for a name or alias, or an error listing the valid ones.

@@ -30,6 +30,10 @@ const char* bulletEngineDescription(BulletEngine engine);
 // The scheme that steps it, for tables: "bullet-explicit", "bullet-backward-euler",
 // "bullet-pbd-N".
 std::string bulletIntegratorName(BulletEngine engine, int classic_iterations);
+// The mysim integrator whose theory (order, stability limit) an engine's scheme follows
+// (docs/reference.md): the explicit deformable world is symplectic Euler, the implicit one
+// linearised backward Euler; empty for classic, which moves positions, not forces.
+const char* bulletScheme(BulletEngine engine);
 
 // The scene section only Bullet engines read: "bullet": {"classic_iterations": N}.
 const mysim::EngineSection& bulletSceneSection();

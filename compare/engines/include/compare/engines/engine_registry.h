@@ -66,6 +66,9 @@ struct Engine {
   std::string description;
   // "NAME:INTEGRATOR" runs it with another integrator (mysim only).
   bool takes_integrator = false;
+  // The mysim integrator whose theory (order, stability limit) its scheme follows, if any
+  // (engines that take an integrator follow the one they run).
+  std::string scheme;
   // Sets the engine up on a model, or refuses naming the field.
   std::function<std::expected<EngineInstance, EngineError>(const mysim::Model&, const RunConfig&)>
       build;
@@ -86,6 +89,14 @@ class EngineRegistry {
 
   const std::vector<Engine>& engines() const { return engines_; }
   std::vector<std::string> names() const;
+  // Every engine as a spec: each registered engine, and each that takes an integrator once per
+  // integrator of the catalogue ("mysim:rk4", ...), without adaptive ones when fixed_step_only.
+  std::vector<std::string> specs(bool fixed_step_only = false) const;
+  // `specs` with "all" replaced by specs() (and "all-fixed-step" by specs(true)).
+  std::vector<std::string> expand(const std::vector<std::string>& specs) const;
+  // The integrator whose theory applies to a spec run on a scene stepped by `scene_integrator`:
+  // "mysim" -> it, "mysim:rk4" -> "rk4", a Bullet engine -> its scheme; empty if none.
+  std::string schemeOf(const std::string& spec, const std::string& scene_integrator) const;
   const Engine* find(const std::string& name) const;
   // The engines files read so far, in order.
   const std::vector<std::string>& enginesFiles() const { return engines_files_; }

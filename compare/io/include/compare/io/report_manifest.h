@@ -2,6 +2,7 @@
 #include <expected>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 namespace springcheck {
 
@@ -17,9 +18,16 @@ struct ReportStamp {
   std::string data_dir;  // springcheck's data (for the commands that make missing inputs)
 };
 
+// A built-in series the report gives a fixed style: an engine spec ("mysim:rk4",
+// "bullet-classic") and its kind ("mysim" or another engine kind), in the registry's order, so
+// the styles come from the catalogues, not from a list in Python.
+struct ReportSeries {
+  std::string key, kind;
+};
+
 // `results`: the results folder (springcheck report --results). Fails only on a comparison.json
 // that cannot be read.
-[[nodiscard]] std::expected<nlohmann::json, std::string> reportManifest(const std::string& results,
-                                                                        const ReportStamp& stamp);
+[[nodiscard]] std::expected<nlohmann::json, std::string> reportManifest(
+    const std::string& results, const ReportStamp& stamp, const std::vector<ReportSeries>& series);
 
 }  // namespace springcheck

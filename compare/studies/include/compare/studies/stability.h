@@ -12,11 +12,8 @@ namespace springcheck {
 // displaced 10 % of the 1 m rest length, with drag c = 2 zeta sqrt(k m).
 mysim::Scene oscillatorScene(double stiffness, double mass, double damping_ratio);
 
-// Theory for the largest stable step on that oscillator (w = sqrt(k / m)), from each method's
-// amplification factor on y' = lambda y, lambda = -zeta w +- i w sqrt(1 - zeta^2):
-//   symplectic Euler, Verlet: h w < 2 (undamped);  RK4: h w <= 2 sqrt(2) (undamped);
-//   forward Euler: |1 + h lambda| <= 1 <=> h <= 2 zeta / w = c / k;
-//   backward Euler: any h (infinity);  trapezoidal (Heun) and dopri5: no finite line (none).
+// Theory for the largest stable step on that oscillator (w = sqrt(k / m)): the catalogue's
+// stable_h_omega at the damping ratio, over w (mysim/integrator.h derives each).
 std::optional<double> theoryStableStep(const std::string& integrator, double stiffness, double mass,
                                        double damping_ratio);
 
@@ -47,15 +44,11 @@ StabilityLimit oscillatorStability(const EngineRegistry& registry, const std::st
                                    double stiffness, double mass, double damping_ratio,
                                    const StabilitySettings& settings);
 
-// The constant c of an engine's stability limit h w_max < c on an undamped linear system, where
-// theory gives one: symplectic Euler and Verlet (and bullet-deformable, which is symplectic Euler)
-// 2, RK4 2 sqrt 2, backward Euler (and bullet-implicit) infinity. Nothing for the rest: forward
-// Euler and Heun's trapezoidal are unstable at any step without damping and are limited by the
-// damping with it; dopri5 adapts its step; bullet-classic moves positions, not forces.
+// The constant c of an integrator's stability limit h w_max < c on an undamped linear system,
+// from the catalogue, where theory gives one (an engine's through EngineRegistry::schemeOf);
+// none where the method is unstable at any step without damping (forward Euler, Heun) or adapts
+// its step (dopri5).
 std::optional<double> stepLimitConstant(const std::string& integrator);
-// The integrator behind an engine spec with the scene's integrator `scene_integrator`:
-// "mysim" -> it, "mysim:rk4" -> "rk4", Bullet engines -> their scheme's name, else the spec.
-std::string schemeOf(const std::string& engine, const std::string& scene_integrator);
 
 // The model with every spring at `stiffness` (0: keep each) and neighbouring particles' masses in
 // the ratio `mass_ratio` (heavy / light, alternating along the index, in a checkerboard on a

@@ -118,7 +118,7 @@ TEST_F(InputFiles, ASweepOverAScenePathWithACommaResumesWithoutRerunning) {
   ASSERT_EQ(*runSweep(registry_, *s, table, {}), 2);
   auto rows = readSweepTable(table);
   ASSERT_TRUE(rows) << rows.error();
-  EXPECT_NE((*rows)[0][1].find("a,b/circle.json"), std::string::npos);
+  EXPECT_NE((*rows)[0].c.scene.find("a,b/circle.json"), std::string::npos);
   EXPECT_EQ(*runSweep(registry_, *s, table, {}), 0);  // both rows kept: nothing runs again
 }
 
@@ -141,16 +141,18 @@ namespace {
 TEST(SweepTable, ALastLineWithoutItsLineBreakIsDroppedAsCutShort) {
   const auto path = std::filesystem::temp_directory_path() /
                     ("springcheck_cut_" + std::to_string(::getpid()) + ".csv");
-  SweepRow row(sweepColumns().size(), "1");
-  row[0] = "0";
+  SweepRow row;
+  row.status = "ok";
   SweepRow cut = row;
-  cut[0] = "1";
-  cut.back() = "note cut her";
-  std::ofstream(path) << csvLine(sweepColumns()) << '\n' << csvLine(row) << '\n' << csvLine(cut);
+  cut.c.id = 1;
+  cut.note = "note cut her";
+  std::ofstream(path) << csvLine(sweepColumns()) << '\n'
+                      << sweepLine(row) << '\n'
+                      << sweepLine(cut);
   auto rows = readSweepTable(path.string());
   ASSERT_TRUE(rows) << rows.error();
   ASSERT_EQ(rows->size(), 1u);
-  EXPECT_EQ((*rows)[0][0], "0");
+  EXPECT_EQ((*rows)[0].c.id, 0);
   std::filesystem::remove(path);
 }
 

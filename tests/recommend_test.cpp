@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "compare/studies/sweep.h"
+
 namespace springcheck {
 namespace {
 
@@ -13,21 +15,13 @@ namespace fs = std::filesystem;
 
 SweepRow row(const std::string& engine, const std::string& integrator, double dt,
              const std::string& status, const std::string& error, double wall, long evaluations) {
-  SweepRow r(sweepColumns().size());
-  auto set = [&](const char* name, const std::string& value) {
-    const auto& cols = sweepColumns();
-    r[std::find(cols.begin(), cols.end(), name) - cols.begin()] = value;
-  };
-  set("scene", "s.json");
-  set("stiffness_scale", "1");
-  set("engine", engine);
-  set("integrator", integrator);
-  set("dt", std::to_string(dt));
-  set("status", status);
-  set("error", error);
-  set("wall_seconds", std::to_string(wall));
-  set("derivative_evaluations", std::to_string(evaluations));
-  set("linear_iterations", "0");
+  SweepRow r;
+  r.c = {0, "s.json", engine, integrator, dt, 1.0, 0.0};
+  r.status = status;
+  if (!error.empty()) r.error = std::stod(error);
+  r.wall_seconds = wall;
+  r.derivative_evaluations = evaluations;
+  r.linear_iterations = 0;
   return r;
 }
 

@@ -41,18 +41,12 @@ class SmallSweep : public ::testing::Test {
     return *rows;
   }
 
-  static std::size_t column(const std::string& name) {
-    const auto& cols = sweepColumns();
-    return static_cast<std::size_t>(std::find(cols.begin(), cols.end(), name) - cols.begin());
-  }
-
-  // Every column but the timing and its conditions: what a rerun must reproduce.
-  static SweepRow withoutTiming(SweepRow row) {
-    for (const char* name : {"wall_seconds", "wall_median_seconds", "realtime_factor", "threads",
-                             "jobs", "load_average"}) {
-      row[column(name)] = "";
-    }
-    return row;
+  // Every column but the timing and its conditions, as written: what a rerun must reproduce.
+  static std::vector<std::string> withoutTiming(SweepRow row) {
+    row.wall_seconds = row.wall_median_seconds = row.realtime_factor = row.load_average =
+        std::nullopt;
+    row.threads = row.jobs = std::nullopt;
+    return sweepRowFields(row);
   }
 
   fs::path dir_;
@@ -64,12 +58,12 @@ TEST_F(SmallSweep, TableHasOneRowPerCaseWithEveryColumn) {
   const auto rows = run("all.csv", {.jobs = 2}, 6);
   ASSERT_EQ(rows.size(), 6u);
   for (std::size_t k = 0; k < rows.size(); ++k) {
-    EXPECT_EQ(rows[k].size(), sweepColumns().size());
-    EXPECT_EQ(rows[k][0], std::to_string(k));  // sorted by case id
-    EXPECT_EQ(rows[k][column("status")], "ok");
+    EXPECT_EQ(sweepRowFields(rows[k]).size(), sweepColumns().size());
+    EXPECT_EQ(rows[k].c.id, static_cast<int>(k));  // sorted by case id
+    EXPECT_EQ(sweepField(rows[k], "status"), "ok");
   }
   // RK4 beats Euler at every step; both errors shrink with dt.
-  auto error = [&](int id) { return std::stod(rows[id][column("error")]); };
+  auto error = [&](int id) { return std::stod(sweepField(rows[id], "error")); };
   for (int k = 0; k < 3; ++k) EXPECT_LT(error(3 + k), error(k));
   EXPECT_LT(error(1), error(0));
   EXPECT_LT(error(5), error(4));
@@ -172,17 +166,18 @@ TEST_F(SmallSweep, TimingRoundsRecordFastestOfRepeatsAndTheirConditions) {
   const auto rows = run("timed.csv", {.jobs = 2, .repeats = 3}, 6);
   ASSERT_EQ(rows.size(), 6u);
   for (const SweepRow& row : rows) {
-    EXPECT_EQ(row[column("repeats")], "3");
-    EXPECT_EQ(row[column("jobs")], "1");  // timed one case at a time
-    const double fastest = std::stod(row[column("wall_seconds")]);
-    const double median = std::stod(row[column("wall_median_seconds")]);
+    EXPECT_EQ(sweepField(row, "repeats"), "3");
+    EXPECT_EQ(sweepField(row, "jobs"), "1");  // timed one case at a time
+    const double fastest = std::stod(sweepField(row, "wall_seconds"));
+    const double median = std::stod(sweepField(row, "wall_median_seconds"));
     EXPECT_GT(fastest, 0.0);
     EXPECT_LE(fastest, median);
     // Realtime factor: simulated seconds (steps x dt) per wall second of the fastest run.
-    const double simulated = std::stod(row[column("steps")]) * std::stod(row[column("dt")]);
-    EXPECT_NEAR(std::stod(row[column("realtime_factor")]) * fastest, simulated, 1e-6 * simulated);
-    EXPECT_GE(std::stoi(row[column("threads")]), 1);
-    EXPECT_FALSE(row[column("load_average")].empty());
+    const double simulated = std::stod(sweepField(row, "steps")) * std::stod(sweepField(row, "dt"));
+    EXPECT_NEAR(std::stod(sweepField(row, "realtime_factor")) * fastest, simulated,
+                1e-6 * simulated);
+    EXPECT_GE(std::stoi(sweepField(row, "threads")), 1);
+    EXPECT_FALSE(sweepField(row, "load_average").empty());
   }
 }
 
@@ -205,10 +200,7 @@ TEST(SelfConsistentSweep, EachEngineConvergesAgainstItsOwnFinerRunAtItsOrder) {
   ASSERT_TRUE(ran) << ran.error();
   const auto rows = *readSweepTable(out.string());
   fs::remove(out);
-  const auto& cols = sweepColumns();
-  auto at = [&](const SweepRow& row, const char* name) {
-    return row[std::find(cols.begin(), cols.end(), name) - cols.begin()];
-  };
+  auto at = [](const SweepRow& row, const char* name) { return sweepField(row, name); };
   ASSERT_EQ(rows.size(), 6u);
   for (int engine = 0; engine < 2; ++engine) {
     for (int k = 0; k < 3; ++k) EXPECT_EQ(at(rows[3 * engine + k], "reference"), "self at dt/16");
@@ -237,10 +229,7 @@ TEST(ToleranceSweep, Dopri5ErrorFallsWithItsTolerance) {
   ASSERT_TRUE(runSweep(registry, *spec, out.string(), {.jobs = 1, .resume = false}));
   const auto rows = *readSweepTable(out.string());
   fs::remove(out);
-  const auto& cols = sweepColumns();
-  auto at = [&](const SweepRow& row, const char* name) {
-    return row[std::find(cols.begin(), cols.end(), name) - cols.begin()];
-  };
+  auto at = [](const SweepRow& row, const char* name) { return sweepField(row, name); };
   EXPECT_EQ(at(rows[0], "tolerance"), "0.001");
   EXPECT_EQ(at(rows[3], "tolerance"), "");
   const double e3 = std::stod(at(rows[0], "error")), e6 = std::stod(at(rows[1], "error")),

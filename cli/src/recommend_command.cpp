@@ -12,6 +12,7 @@
 #include "compare/io/atomic_file.h"
 #include "compare/io/progress.h"
 #include "compare/studies/recommend.h"
+#include "compare/studies/sweep.h"
 #include "mysim/json_input.h"
 #include "mysim/thread_budget.h"
 
@@ -31,20 +32,6 @@ struct RecommendOptions {
   std::vector<std::string> engines_files;
   Timing timing;
 };
-
-// A sweep around a scene's own step: every engine and fixed-step integrator at 4, 2, 1, 1/2 and
-// 1/4 times the scene's dt, against RK4 at a step 16 times finer than the finest.
-std::string sweepAroundScene(const EngineRegistry& registry, const std::string& path,
-                             const mysim::Scene& scene) {
-  json spec = {{"name", "recommend_" + scene.name},
-               {"scenes", {fs::absolute(path).lexically_normal().string()}},
-               {"engines", registry.names()},
-               {"integrators", mysim::integratorNames(true)},
-               {"dt", {4 * scene.dt, 2 * scene.dt, scene.dt, scene.dt / 2, scene.dt / 4}},
-               {"sample_interval", 4 * scene.dt},
-               {"reference", {{"integrator", "rk4"}, {"refine", 16}}}};
-  return spec.dump();
-}
 
 json choiceJson(const std::optional<Choice>& c) {
   if (!c) return nullptr;
@@ -81,7 +68,7 @@ int recommendCommand(const RecommendOptions& o) {
         std::cerr << "error: " << scene.error() << '\n';
         return kBadInput;
       }
-      spec = parseSweepSpec(sweepAroundScene(*registry, o.target, *scene), o.target, *registry);
+      spec = sweepAroundScene(*registry, o.target, std::move(*scene));
     }
     if (!spec) {
       std::cerr << "error: " << spec.error() << '\n';
@@ -91,7 +78,7 @@ int recommendCommand(const RecommendOptions& o) {
     std::error_code ec;
     fs::create_directories(fs::path(table).parent_path(), ec);
     SweepOptions options;
-    options.jobs = o.jobs > 0 ? o.jobs : mysim::availableCores();
+    options.jobs = o.jobs;
     options.repeats = o.timing.repeats;
     options.threads = o.timing.threads;
     options.fixed_threads = o.timing.fixed_threads;

@@ -43,7 +43,8 @@ int runScene(const RunOptions& o) {
   }
   RunConfig config = runConfig(*scene);
   applyTiming(o.timing, config);
-  auto record = registry->run(o.engine, mysim::buildModel(*scene), config);
+  const mysim::Model model = mysim::buildModel(*scene);
+  auto record = registry->run(o.engine, model, config);
   if (!record) {
     const bool overridden = o.dt > 0 || o.duration > 0;
     std::cerr << "error: " << record.error().message
@@ -54,7 +55,8 @@ int runScene(const RunOptions& o) {
     return exitCodeFor(record.error());
   }
   const std::string dir = o.out.empty() ? "out/" + scene->name + "/" + o.engine : o.out;
-  if (auto written = writeRunOutputs(dir, *scene, *record); !written) {
+  if (auto written = writeRunOutputs(dir, model, config.scene_name, config.source, *record);
+      !written) {
     std::cerr << "error: " << written.error() << '\n';
     return kFailure;
   }

@@ -8,6 +8,7 @@
 
 #include "commands.h"
 #include "compare/io/progress.h"
+#include "compare/studies/parallel_jobs.h"
 #include "compare/studies/sweep.h"
 #include "mysim/thread_budget.h"
 
@@ -33,7 +34,7 @@ int sweep(const SweepCommandOptions& o) {
     return kBadInput;
   }
   SweepOptions options;
-  options.jobs = o.jobs > 0 ? o.jobs : mysim::availableCores();
+  options.jobs = o.jobs;
   if (std::sscanf(o.shard.c_str(), "%d/%d", &options.shard_index, &options.shard_count) != 2 ||
       options.shard_count < 1 || options.shard_index < 0 ||
       options.shard_index >= options.shard_count) {
@@ -59,7 +60,7 @@ int sweep(const SweepCommandOptions& o) {
     return kFailure;
   }
   std::cout << "sweep " << spec->name << ": " << *ran << " runs now (shard " << o.shard << " of "
-            << total << " cases, " << options.jobs << " jobs; "
+            << total << " cases, " << jobCount(o.jobs, total) << " jobs; "
             << (options.repeats > 1
                     ? "timed alone, fastest of " + std::to_string(options.repeats) + " rounds"
                     : std::string("timed once, cases side by side"))

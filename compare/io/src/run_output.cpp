@@ -30,10 +30,11 @@ json energyJson(const mysim::EnergyTerms& e) {
       {"kinetic", e.kinetic}, {"gravity", e.gravity}, {"spring", e.spring}, {"total", e.total()}};
 }
 
-json summaryJson(const mysim::Scene& scene, const mysim::RunRecord& r) {
-  json s = {{"scene", scene.name},
-            {"scene_file", scene.source},
-            {"system", mysim::systemKindName(scene.kind)},
+json summaryJson(const mysim::Model& model, const std::string& scene_name,
+                 const std::string& scene_file, const mysim::RunRecord& r) {
+  json s = {{"scene", scene_name},
+            {"scene_file", scene_file},
+            {"system", mysim::systemKindName(model.kind)},
             {"engine", r.engine},
             {"integrator", r.integrator},
             {"dt", r.dt},
@@ -73,7 +74,9 @@ json summaryJson(const mysim::Scene& scene, const mysim::RunRecord& r) {
 }  // namespace
 
 std::expected<void, std::string> writeRunOutputs(const std::string& dir_name,
-                                                 const mysim::Scene& scene,
+                                                 const mysim::Model& model,
+                                                 const std::string& scene_name,
+                                                 const std::string& scene_file,
                                                  const mysim::RunRecord& r) {
   const fs::path dir(dir_name);
   std::error_code ec;
@@ -122,17 +125,18 @@ std::expected<void, std::string> writeRunOutputs(const std::string& dir_name,
     if (!done) return done;
   }
 
-  if (scene.kind == mysim::SystemKind::Cloth) {
+  if (model.kind == mysim::SystemKind::Cloth && model.grid) {
     mysim::Vector x(3 * particles);
     for (int i = 0; i < particles; ++i) x.segment<3>(3 * i) = last.block<1, 3>(i, 0).transpose();
     done = writeFileAtomically(in("final.obj"), [&](std::ostream& out) {
-      mysim::writeObj(out, {scene.cloth.rows, scene.cloth.cols}, x);
+      mysim::writeObj(out, {model.grid->rows, model.grid->cols}, x);
     });
     if (!done) return done;
   }
 
-  return writeFileAtomically(
-      in("summary.json"), [&](std::ostream& out) { out << summaryJson(scene, r).dump(2) << '\n'; });
+  return writeFileAtomically(in("summary.json"), [&](std::ostream& out) {
+    out << summaryJson(model, scene_name, scene_file, r).dump(2) << '\n';
+  });
 }
 
 }  // namespace springcheck

@@ -10,8 +10,7 @@
 
 namespace springcheck {
 
-EngineMetrics engineMetrics(const mysim::Scene& scene, const mysim::Model& model,
-                            const EngineRun& run) {
+EngineMetrics engineMetrics(const mysim::Model& model, const EngineRun& run) {
   const mysim::RunRecord& r = run.record;
   EngineMetrics m;
   m.engine = run.engine;
@@ -27,13 +26,14 @@ EngineMetrics engineMetrics(const mysim::Scene& scene, const mysim::Model& model
   m.closed_form = closedFormError(model, r);
   m.drift = energyDrift(r.energies);
   m.external_work = model.wind.has_value() || model.pin_motion.has_value();
-  if (scene.kind == mysim::SystemKind::Circle) return m;
+  if (model.isCircle()) return m;
 
-  const SagSeries sag = sagOverTime(model, r);
-  m.sag_lowest = sag.lowest.back();
-  if (!sag.free_middle.empty()) m.sag_free_middle = sag.free_middle.back();
+  m.sag = sagOverTime(model, r);
+  m.sag_lowest = m.sag.lowest.back();
+  if (!m.sag.free_middle.empty()) m.sag_free_middle = m.sag.free_middle.back();
   if (!model.colliders.empty()) {
     for (const Penetration& p : penetrationOverTime(model.colliders, r)) {
+      m.penetration_deepest.push_back(p.deepest);
       m.penetration_max = std::max(m.penetration_max, p.deepest);
       m.penetration_mean_max = std::max(m.penetration_mean_max, p.mean_depth);
       m.penetration_count_max = std::max(m.penetration_count_max, p.count);
@@ -58,18 +58,17 @@ Surface surfaceOf(const mysim::Model& model, const mysim::ParticleRows& frame) {
   return s;
 }
 
-PairMetrics pairMetrics(const mysim::Scene& scene, const mysim::Model& model, const EngineRun& a,
-                        const EngineRun& b) {
+PairMetrics pairMetrics(const mysim::Model& model, const EngineRun& a, const EngineRun& b,
+                        const EngineMetrics& ma, const EngineMetrics& mb) {
   PairMetrics m;
   m.a = a.engine;
   m.b = b.engine;
   const mysim::ParticleRows& fa = a.record.frames.back();
   const mysim::ParticleRows& fb = b.record.frames.back();
   m.drape = nodeDistance(fa.leftCols<3>(), fb.leftCols<3>());
-  if (scene.kind != mysim::SystemKind::Circle) {
+  if (!model.isCircle()) {
     m.surface = surfaceDistance(surfaceOf(model, fa), surfaceOf(model, fb));
-    m.sag_difference = std::abs(sagOverTime(model, a.record).lowest.back() -
-                                sagOverTime(model, b.record).lowest.back());
+    m.sag_difference = std::abs(ma.sag_lowest - mb.sag_lowest);
   }
   if (auto d = trajectoryDistance(a.record, b.record)) m.trajectory_rms_max = d->max_rms;
   return m;

@@ -5,42 +5,25 @@
 #include <map>
 
 namespace springcheck {
-namespace {
-
-double numberOr(const std::string& text, double fallback) {
-  try {
-    return text.empty() ? fallback : std::stod(text);
-  } catch (const std::exception&) {
-    return fallback;
-  }
-}
-
-}  // namespace
-
 std::vector<Recommendation> recommend(const std::vector<SweepRow>& rows, double max_error,
                                       Cost cost) {
-  auto at = [](const SweepRow& row, const char* name) -> const std::string& {
-    return row[sweepColumn(name)];
-  };
   std::vector<std::pair<std::string, double>> order;  // groups in the table's order
   std::map<std::pair<std::string, double>, std::vector<Choice>> groups;
   for (const SweepRow& row : rows) {
-    const std::pair<std::string, double> key{at(row, "scene"),
-                                             numberOr(at(row, "stiffness_scale"), 1.0)};
+    const std::pair<std::string, double> key{row.c.scene, row.c.stiffness_scale};
     if (!groups.count(key)) order.push_back(key);
     auto& group = groups[key];
-    if (at(row, "status") != "ok" || at(row, "error").empty()) continue;
+    if (row.status != "ok" || !row.error) continue;
     Choice c;
-    c.engine = at(row, "engine");
-    c.integrator = at(row, "integrator");
-    c.tolerance = at(row, "tolerance");
-    c.dt = numberOr(at(row, "dt"), 0.0);
-    c.error = numberOr(at(row, "error"), 0.0);
-    c.wall_seconds = numberOr(at(row, "wall_seconds"), 0.0);
-    c.realtime_factor = numberOr(at(row, "realtime_factor"), 0.0);
-    c.work = static_cast<long>(numberOr(at(row, "derivative_evaluations"), 0.0) +
-                               numberOr(at(row, "linear_iterations"), 0.0));
-    c.reference = at(row, "reference");
+    c.engine = row.c.engine;
+    c.integrator = row.c.integrator;
+    c.tolerance = sweepField(row, "tolerance");
+    c.dt = row.c.dt;
+    c.error = *row.error;
+    c.wall_seconds = row.wall_seconds.value_or(0.0);
+    c.realtime_factor = row.realtime_factor.value_or(0.0);
+    c.work = row.derivative_evaluations.value_or(0) + row.linear_iterations.value_or(0);
+    c.reference = row.reference;
     group.push_back(c);
   }
   std::vector<Recommendation> out;

@@ -2,7 +2,7 @@
 #include <expected>
 #include <string>
 
-#include "mysim/scene.h"
+#include "mysim/model.h"
 #include "mysim/simulation.h"
 
 namespace springcheck {
@@ -17,8 +17,12 @@ namespace springcheck {
 //   final.obj         the last cloth frame as a mesh with normals (cloth scenes)
 // Each file is written under a temporary name and renamed; summary.json comes last, so a
 // directory with a summary holds a whole run.
+// `scene_name` and `scene_file` name where the model came from (a RunConfig's scene_name and
+// source).
 [[nodiscard]] std::expected<void, std::string> writeRunOutputs(const std::string& dir,
-                                                               const mysim::Scene& scene,
+                                                               const mysim::Model& model,
+                                                               const std::string& scene_name,
+                                                               const std::string& scene_file,
                                                                const mysim::RunRecord& record);
 
 }  // namespace springcheck

@@ -8,6 +8,7 @@
 #include "compare/metrics/drape_metric.h"
 #include "compare/metrics/energy_metric.h"
 #include "compare/metrics/momentum_metric.h"
+#include "compare/metrics/sag_metric.h"
 #include "compare/metrics/surface_distance.h"
 #include "mysim/scene.h"
 #include "mysim/simulation.h"
@@ -33,8 +34,10 @@ struct EngineMetrics {
   int repeats = 1;
   int threads = 1;
   long steps = 0;
-  double sag_lowest = 0.0;                // m below the pins, last frame
-  std::optional<double> sag_free_middle;  // m, last frame
+  double sag_lowest = 0.0;                  // m below the pins, last frame
+  std::optional<double> sag_free_middle;    // m, last frame
+  SagSeries sag;                            // per frame (empty for the circle)
+  std::vector<double> penetration_deepest;  // m, per frame (empty without colliders)
   std::optional<ClosedFormError> closed_form;
   double penetration_max = 0.0;         // m, deepest over all frames (0 without colliders)
   double penetration_mean_max = 0.0;    // m, largest per-frame mean depth
@@ -65,10 +68,12 @@ struct TrajectoryDistance {
 std::optional<TrajectoryDistance> trajectoryDistance(const mysim::RunRecord& a,
                                                      const mysim::RunRecord& b);
 
-EngineMetrics engineMetrics(const mysim::Scene& scene, const mysim::Model& model,
-                            const EngineRun& run);
-PairMetrics pairMetrics(const mysim::Scene& scene, const mysim::Model& model, const EngineRun& a,
-                        const EngineRun& b);
+// Every metric of one run, or of a pair, each computed once (from the model the runs were made
+// of; the scene stops at the model builder).
+EngineMetrics engineMetrics(const mysim::Model& model, const EngineRun& run);
+// `ma`, `mb`: the runs' own metrics, so nothing of a single run is computed again.
+PairMetrics pairMetrics(const mysim::Model& model, const EngineRun& a, const EngineRun& b,
+                        const EngineMetrics& ma, const EngineMetrics& mb);
 
 // The surface of a model's shape in a frame: grid triangles for a cloth, one degenerate
 // triangle per spring otherwise.

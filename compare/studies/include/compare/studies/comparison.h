@@ -11,8 +11,8 @@ namespace springcheck {
 
 // A scene run in several engines, with every metric per engine and per pair.
 struct Comparison {
-  mysim::Scene scene;
   mysim::Model model;
+  RunConfig config;  // the scene's run settings the engines ran with
   std::vector<EngineRun> runs;
   // Engines that cannot run the scene, with their message (which names engine and field), and
   // external engines that ran and failed (crashed, timed out, returned a bad result).

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "compare/studies/sweep.h"
+#include "compare/studies/sweep_table.h"
 
 namespace springcheck {
 

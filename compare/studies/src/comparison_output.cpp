@@ -1,0 +1,207 @@
+// The files of a comparison: each run's own files, one table per concern and comparison.json,
+// each written whole or not at all, from metrics computed once (compareScene).
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "compare/io/atomic_file.h"
+#include "compare/io/csv.h"
+#include "compare/io/run_output.h"
+#include "compare/studies/comparison.h"
+
+namespace springcheck {
+namespace {
+
+using nlohmann::json;
+
+json metricsJson(const EngineMetrics& m) {
+  json j = {{"engine", m.engine},
+            {"steps", m.steps},
+            {"wall_seconds", m.wall_seconds},
+            {"wall_median_seconds", m.wall_median_seconds},
+            {"realtime_factor", m.realtime_factor},
+            {"repeats", m.repeats},
+            {"threads", m.threads},
+            {"external_work", m.external_work},
+            {"energy_reference", m.drift.reference}};
+  for (const MetricInfo& info : metricCatalog()) {
+    if (info.pair) continue;
+    const auto v = metricValue(m, info.name);
+    j[info.name] = v ? json(*v) : json();
+  }
+  if (m.closed_form) {
+    j["closed_form"] = {{"quantity", m.closed_form->quantity}, {"exact", m.closed_form->exact}};
+  }
+  j["blowup_time"] = m.blew_up ? json(m.blowup_time) : json();
+  j["status"] = m.status;
+  return j;
+}
+
+json pairJson(const PairMetrics& p) {
+  json j = {{"a", p.a}, {"b", p.b}, {"drape_argmax_node", p.drape.argmax}};
+  for (const MetricInfo& info : metricCatalog()) {
+    if (!info.pair) continue;
+    const auto v = metricValue(p, info.name);
+    j[info.name] = v ? json(*v) : json();
+  }
+  return j;
+}
+
+std::string safeDirName(std::string engine) {
+  for (char& ch : engine) {
+    if (ch == ':') ch = '_';
+  }
+  return engine;
+}
+
+// What a reader of the tables needs to know of the model (the report draws the colliders, picks the
+// energy view for undamped or damped scenes, and draws cloths as meshes).
+json modelJson(const mysim::Model& model) {
+  bool spring_damping = false;
+  for (const mysim::Spring& s : model.springs) spring_damping |= s.damping > 0.0;
+  json j = {{"kind", mysim::systemKindName(model.kind)},
+            {"particles", model.particleCount()},
+            {"damped", model.drag > 0.0 || spring_damping},
+            {"driven", model.wind.has_value() || model.pin_motion.has_value()},
+            {"colliders", json::array()},
+            {"grid", json()}};
+  for (const mysim::Collider& c : model.colliders) j["colliders"].push_back(describeCollider(c));
+  if (model.grid) j["grid"] = {{"rows", model.grid->rows}, {"cols", model.grid->cols}};
+  return j;
+}
+
+using Write = std::expected<void, std::string>;
+
+// engine_metrics.csv: every single-run metric of the catalogue, then the timing columns.
+Write writeEngineTable(const std::string& path, const Comparison& c) {
+  return writeFileAtomically(path, [&](std::ostream& engines) {
+    engines.precision(10);
+    engines << "engine";
+    for (const MetricInfo& info : metricCatalog()) {
+      if (!info.pair) engines << ',' << info.name;
+    }
+    engines << ",wall_seconds,wall_median_seconds,realtime_factor,repeats,threads,steps,status\n";
+    for (const EngineMetrics& m : c.engines) {
+      engines << csvField(m.engine);
+      for (const MetricInfo& info : metricCatalog()) {
+        if (info.pair) continue;
+        const auto v = metricValue(m, info.name);
+        engines << ',';
+        if (v) engines << *v;
+      }
+      engines << ',' << m.wall_seconds << ',' << m.wall_median_seconds << ',' << m.realtime_factor
+              << ',' << m.repeats << ',' << m.threads << ',' << m.steps << ',' << m.status << '\n';
+    }
+  });
+}
+
+// pair_metrics.csv: every pair metric of the catalogue.
+Write writePairTable(const std::string& path, const Comparison& c) {
+  return writeFileAtomically(path, [&](std::ostream& pairs) {
+    pairs.precision(10);
+    pairs << "a,b";
+    for (const MetricInfo& info : metricCatalog()) {
+      if (info.pair) pairs << ',' << info.name;
+    }
+    pairs << '\n';
+    for (const PairMetrics& p : c.pairs) {
+      pairs << csvField(p.a) << ',' << csvField(p.b);
+      for (const MetricInfo& info : metricCatalog()) {
+        if (!info.pair) continue;
+        const auto v = metricValue(p, info.name);
+        pairs << ',';
+        if (v) pairs << *v;
+      }
+      pairs << '\n';
+    }
+  });
+}
+
+// node_distance.csv: per-node distance of every run's final shape to the first run's (for the
+// drape colour maps), as the pair metrics measured it.
+Write writeNodeDistances(const std::string& path, const Comparison& c) {
+  return writeFileAtomically(path, [&](std::ostream& nodes) {
+    nodes.precision(10);
+    nodes << "engine,reference_engine,node,distance\n";
+    if (c.runs.empty()) return;
+    for (const PairMetrics& p : c.pairs) {
+      if (p.a != c.runs[0].engine) continue;
+      for (std::size_t i = 0; i < p.drape.per_node.size(); ++i) {
+        nodes << csvField(p.b) << ',' << csvField(p.a) << ',' << i << ',' << p.drape.per_node[i]
+              << '\n';
+      }
+    }
+  });
+}
+
+// series.csv: per frame and engine, sag of the lowest point and the free edge, deepest
+// penetration and total energy drift.
+Write writeSeries(const std::string& path, const Comparison& c) {
+  return writeFileAtomically(path, [&](std::ostream& series) {
+    series.precision(10);
+    series << "engine,t,sag_lowest,sag_free_middle,penetration_deepest,energy_drift_total\n";
+    if (c.model.isCircle()) return;
+    for (std::size_t r = 0; r < c.runs.size(); ++r) {
+      const mysim::RunRecord& rec = c.runs[r].record;
+      const EngineMetrics& m = c.engines[r];
+      for (std::size_t f = 0; f < rec.frames.size(); ++f) {
+        series << csvField(c.runs[r].engine) << ',' << rec.times[f] << ',' << m.sag.lowest[f]
+               << ',';
+        if (!m.sag.free_middle.empty()) series << m.sag.free_middle[f];
+        series << ',';
+        if (!m.penetration_deepest.empty()) series << m.penetration_deepest[f];
+        series << ',';
+        if (f < m.drift.total.size()) series << m.drift.total[f];
+        series << '\n';
+      }
+    }
+  });
+}
+
+json comparisonJson(const Comparison& c) {
+  json j = {{"scene", c.config.scene_name}, {"scene_file", c.config.source},
+            {"dt", c.config.run.dt},        {"duration", c.config.run.duration},
+            {"refused", json::array()},     {"failed", json::array()},
+            {"engines", json::array()},     {"pairs", json::array()}};
+  for (const Comparison::Refusal& r : c.failed) {
+    j["failed"].push_back({{"engine", r.engine}, {"reason", r.reason}});
+  }
+  for (const Comparison::Refusal& r : c.refused) {
+    j["refused"].push_back({{"engine", r.engine}, {"reason", r.reason}});
+  }
+  j["model"] = modelJson(c.model);
+  for (std::size_t r = 0; r < c.engines.size(); ++r) {
+    json e = metricsJson(c.engines[r]);
+    // Where its run files are, and what stepped it (the scene's integrator for plain "mysim").
+    e["folder"] = safeDirName(c.engines[r].engine);
+    if (r < c.runs.size()) e["integrator"] = c.runs[r].record.integrator;
+    j["engines"].push_back(e);
+  }
+  for (const PairMetrics& p : c.pairs) j["pairs"].push_back(pairJson(p));
+  return j;
+}
+
+}  // namespace
+
+std::expected<void, std::string> writeComparison(const std::string& dir, const Comparison& c) {
+  namespace fs = std::filesystem;
+  for (const EngineRun& run : c.runs) {
+    const std::string folder = (fs::path(dir) / safeDirName(run.engine)).string();
+    if (auto w = writeRunOutputs(folder, c.model, c.config.scene_name, c.config.source, run.record);
+        !w) {
+      return w;
+    }
+  }
+  auto in = [&](const char* name) { return (fs::path(dir) / name).string(); };
+  // comparison.json last, so it is never newer than the tables.
+  for (auto [name, write] : {std::pair{"engine_metrics.csv", &writeEngineTable},
+                             std::pair{"pair_metrics.csv", &writePairTable},
+                             std::pair{"node_distance.csv", &writeNodeDistances},
+                             std::pair{"series.csv", &writeSeries}}) {
+    if (auto done = write(in(name), c); !done) return done;
+  }
+  const json j = comparisonJson(c);
+  return writeFileAtomically(in("comparison.json"),
+                             [&](std::ostream& out) { out << j.dump(2) << '\n'; });
+}
+
+}  // namespace springcheck

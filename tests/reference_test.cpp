@@ -282,7 +282,7 @@ TEST(CircleInBullet, DeformableTwinEqualsMysimSymplecticEulerOnTheTwin) {
   // The twin's spring has rest length 0, so strain (l / rest - 1) means nothing there.
   mysim::ParticleSystem twin(mysim::circleTwin(mysim::buildModel(circle)),
                              {.max_strain = std::numeric_limits<double>::infinity()});
-  mysim::IntegratorStepper symplectic(twin, mysim::makeSymplecticEuler());
+  mysim::IntegratorStepper symplectic(twin, std::move(mysim::makeIntegrator({.name = "symplectic-euler"}).value()));
   const mysim::RunRecord own =
       mysim::simulate(twin, symplectic, twin.initialState(), {circle.dt, circle.duration, 0.0});
   ASSERT_EQ(bullet.frames.size(), own.frames.size());

@@ -15,6 +15,18 @@ StepCounts& StepCounts::operator+=(const StepCounts& o) {
   return *this;
 }
 
+// Each method's factory, defined in its own file (adding a method: that file and a row below).
+std::unique_ptr<Integrator> makeForwardEuler();
+std::unique_ptr<Integrator> makeTrapezoidal();
+std::unique_ptr<Integrator> makeRk4();
+std::unique_ptr<Integrator> makeSymplecticEuler();
+std::unique_ptr<Integrator> makeVelocityVerlet();
+std::unique_ptr<Integrator> makeBackwardEuler(
+    double cg_tolerance, int cg_max_iterations,
+    CgPreconditioner preconditioner = CgPreconditioner::Auto);
+std::unique_ptr<Integrator> makeDormandPrince(double abs_tolerance, double rel_tolerance);
+
+
 namespace {
 
 using Limit = std::optional<double>;

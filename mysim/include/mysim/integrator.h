@@ -95,15 +95,4 @@ std::expected<std::string, std::string> canonicalIntegratorName(std::string_view
 std::expected<std::unique_ptr<Integrator>, std::string> makeIntegrator(
     const IntegratorSettings& settings);
 
-// Per-method factories (one file each).
-std::unique_ptr<Integrator> makeForwardEuler();
-std::unique_ptr<Integrator> makeTrapezoidal();
-std::unique_ptr<Integrator> makeRk4();
-std::unique_ptr<Integrator> makeSymplecticEuler();
-std::unique_ptr<Integrator> makeVelocityVerlet();
-std::unique_ptr<Integrator> makeBackwardEuler(
-    double cg_tolerance, int cg_max_iterations,
-    CgPreconditioner preconditioner = CgPreconditioner::Auto);
-std::unique_ptr<Integrator> makeDormandPrince(double abs_tolerance, double rel_tolerance);
-
 }  // namespace mysim

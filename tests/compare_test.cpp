@@ -193,13 +193,13 @@ TEST(Gate, FailsWhenABoundIsTightenedBelowTheMeasuredValue) {
   EngineRegistry registry;
   auto tolerances = parseTolerances(checkJson(kGoodCheck), "tol.json", kRoot, registry);
   ASSERT_TRUE(tolerances) << tolerances.error();
-  const GateReport loose = runGate(registry, *tolerances);
+  const GateReport loose = runGate(registry, *tolerances).value();
   ASSERT_TRUE(loose.results[0].measured);
   EXPECT_TRUE(loose.passed());
   const double measured = *loose.results[0].measured;
   EXPECT_GT(measured, 0.0);
   tolerances->checks[0].bound = 0.5 * measured;
-  const GateReport tight = runGate(registry, *tolerances);
+  const GateReport tight = runGate(registry, *tolerances).value();
   EXPECT_FALSE(tight.passed());
   EXPECT_DOUBLE_EQ(*tight.results[0].measured, measured);  // same input, same output
 }
@@ -211,7 +211,7 @@ TEST(Gate, AnEngineThatRefusesTheSceneFailsItsCheck) {
                    "metric": "sag_lowest", "bound": 10, "why": "w")"),
                       "tol.json", kRoot, registry);
   ASSERT_TRUE(tolerances) << tolerances.error();
-  const GateReport report = runGate(registry, *tolerances);
+  const GateReport report = runGate(registry, *tolerances).value();
   EXPECT_FALSE(report.passed());
   EXPECT_NE(report.results[0].problem.find("refused"), std::string::npos);
 }

@@ -39,7 +39,13 @@ void addGateCommand(CLI::App& app, int& exit_code) {
       exit_code = kBadInput;
       return;
     }
-    const GateReport report = runGate(*registry, *tolerances);
+    const auto gate = runGate(*registry, *tolerances);
+    if (!gate) {
+      std::cerr << "error: " << gate.error() << '\n';
+      exit_code = kBadInput;
+      return;
+    }
+    const GateReport& report = *gate;
     printGate(std::cout, report);
     if (!json_out->empty()) {
       nlohmann::json results = nlohmann::json::array();

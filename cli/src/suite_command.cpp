@@ -70,9 +70,13 @@ int runSuite(const SuiteOptions& o) {
     if (tolerances) done.emplace(std::filesystem::weakly_canonical(file, ec).string(), *comparison);
   }
   if (tolerances) {
-    const GateReport report = runGate(*registry, *tolerances, done);
-    printGate(std::cout, report);
-    if (!report.passed() && code == kOk) code = kFailure;
+    const auto report = runGate(*registry, *tolerances, done);
+    if (!report) {
+      std::cerr << "error: gate: " << report.error() << '\n';
+      return kBadInput;
+    }
+    printGate(std::cout, *report);
+    if (!report->passed() && code == kOk) code = kFailure;
   }
   std::cout << "results in " << o.out << "/<scene>/\n";
   return code;

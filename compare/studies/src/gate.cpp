@@ -86,8 +86,9 @@ bool covers(const Comparison& c, const std::vector<std::string>& engines) {
 
 }  // namespace
 
-GateReport runGate(const EngineRegistry& registry, const Tolerances& tolerances,
-                   const ComparisonCache& done) {
+std::expected<GateReport, std::string> runGate(const EngineRegistry& registry,
+                                               const Tolerances& tolerances,
+                                               const ComparisonCache& done) {
   // Engines per scene, in order of first mention, so every run happens once.
   std::map<std::string, std::vector<std::string>> engines;
   std::vector<std::string> scenes;
@@ -107,8 +108,8 @@ GateReport runGate(const EngineRegistry& registry, const Tolerances& tolerances,
       comparisons.emplace(path, cached->second);
       continue;
     }
-    auto scene = registry.loadScene(path);  // validated when the tolerances were read
-    auto comparison = compareScene(registry, *scene, engines[path]);
+    auto comparison = compareScene(registry, tolerances.scenes.at(path), engines[path]);
+    if (!comparison) return std::unexpected(path + ": " + comparison.error());
     comparisons.emplace(path, std::move(*comparison));
   }
   for (const ToleranceCheck& check : tolerances.checks) {

@@ -16,11 +16,14 @@ using mysim::FieldReader;
 
 constexpr const char* kSchema = "docs/compare.md";
 
-ToleranceCheck readCheck(FieldReader& r, const fs::path& root, const EngineRegistry& registry) {
+ToleranceCheck readCheck(FieldReader& r, const fs::path& root, const EngineRegistry& registry,
+                         std::map<std::string, mysim::Scene>& scenes) {
   ToleranceCheck c;
   c.scene = (root / r.text("scene")).lexically_normal().string();
-  if (auto scene = registry.loadScene(c.scene); !scene) {
-    throw FieldError{r.field("scene"), "unknown scene: " + scene.error()};
+  if (!scenes.count(c.scene)) {  // each scene file read once, however many checks name it
+    auto scene = registry.loadScene(c.scene);
+    if (!scene) throw FieldError{r.field("scene"), "unknown scene: " + scene.error()};
+    scenes.emplace(c.scene, std::move(*scene));
   }
   for (const std::string& e : r.textList("engines")) {
     if (auto known = registry.check(e); !known) throw FieldError{r.field("engines"), known.error()};
@@ -54,7 +57,7 @@ std::expected<Tolerances, std::string> readTolerances(const nlohmann::json& root
                                                       EngineRegistry& registry) {
   return mysim::readFields<Tolerances>(source, [&] {
     FieldReader top(root, "");
-    Tolerances t{source, {}, ""};
+    Tolerances t{source, {}, {}, ""};
     const fs::path scene_root = fs::path(base_dir) / top.text("scene_root", "");
     if (top.has("engines_file")) {
       t.engines_file = (fs::path(base_dir) / top.text("engines_file")).lexically_normal().string();
@@ -66,7 +69,7 @@ std::expected<Tolerances, std::string> readTolerances(const nlohmann::json& root
       }
     }
     top.objects("checks", [&](FieldReader& check, std::size_t) {
-      t.checks.push_back(readCheck(check, scene_root, registry));
+      t.checks.push_back(readCheck(check, scene_root, registry, t.scenes));
     });
     top.refuseUnknown(kSchema);
     return t;

@@ -1,4 +1,5 @@
 #pragma once
+#include <expected>
 #include <map>
 #include <optional>
 #include <ostream>
@@ -26,9 +27,11 @@ struct GateReport {
 using ComparisonCache = std::map<std::string, Comparison>;
 
 // Runs each scene once in every engine its checks name, then checks every bound. A scene in
-// `done` that ran every engine its checks need is not run again.
-GateReport runGate(const EngineRegistry& registry, const Tolerances& tolerances,
-                   const ComparisonCache& done = {});
+// `done` that ran every engine its checks need is not run again. Fails only when a run is invalid
+// (a limit every run is held to).
+[[nodiscard]] std::expected<GateReport, std::string> runGate(const EngineRegistry& registry,
+                                                             const Tolerances& tolerances,
+                                                             const ComparisonCache& done = {});
 void printGate(std::ostream& out, const GateReport& report);
 
 }  // namespace springcheck

@@ -1,9 +1,11 @@
 #pragma once
 #include <expected>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "compare/engines/engine_registry.h"
+#include "mysim/scene.h"
 
 namespace springcheck {
 
@@ -19,6 +21,7 @@ struct ToleranceCheck {
 struct Tolerances {
   std::string source;
   std::vector<ToleranceCheck> checks;
+  std::map<std::string, mysim::Scene> scenes;  // every check's scene, read and validated once
   std::string engines_file;  // the user's engines the checks name, if any (resolved path)
 };
 

@@ -19,25 +19,21 @@ def comparison_page(c):
 
     def draw(fig, ctx):
         ax = fig.add_subplot(plot_area(fig)[0, 0])
-        drift = defaultdict(dict)  # engine -> t -> relative drift
-        for r in read_csv(c["series"]):
-            value = number(r["energy_drift_total"])
-            if value is not None:
-                drift[r["engine"]][r["t"]] = value
-        engines = [e for e in c["engines"] if e["name"] in drift]
+        # Damped scenes: each engine against the comparison's energy reference (the run of the
+        # highest-order fixed-step integrator), as springcheck computed it; else the balance itself.
         reference = None
-        if damped:
-            reference = next((e for e in engines if ctx.styles.key_of(e) == "mysim:rk4"), None)
+        if damped and c.get("energy_reference"):
+            reference = next((e for e in c["engines"] if e["name"] == c["energy_reference"]), None)
+        column = "energy_drift_vs_reference" if reference is not None else "energy_drift_total"
+        drift = defaultdict(dict)  # engine -> t -> the drawn value
+        for r in read_csv(c["series"]):
+            value = number(r.get(column))
+            if value is not None:
+                drift[r["engine"]][r["t"]] = abs(value)
+        engines = [e for e in c["engines"] if e["name"] in drift]
         notes, drawn = [], {}
         for e in engines:
-            series = drift[e["name"]]
-            if reference is not None and e is not reference:
-                base = drift[reference["name"]]
-                pts = [(number(t), abs(v - base[t])) for t, v in series.items() if t in base]
-            elif reference is not None:
-                continue
-            else:
-                pts = [(number(t), abs(v)) for t, v in series.items()]
+            pts = [(number(t), v) for t, v in drift[e["name"]].items()]
             pts = sorted((t, max(v, FLOOR)) for t, v in pts)
             kw = ctx.styles.line(ctx.styles.key_of(e))
             kw["marker"] = None

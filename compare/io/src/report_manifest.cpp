@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "compare/io/csv.h"
+#include "compare/io/report_headlines.h"
 
 namespace springcheck {
 namespace {
@@ -98,6 +99,7 @@ std::expected<json, std::string> comparisons(const fs::path& results) {
                   {"scene_file", c.value("scene_file", "")},
                   {"folder", dir.string()},
                   {"model", c.value("model", json::object())},
+                  {"energy_reference", c.value("energy_reference", json())},
                   {"refused", c.value("refused", json::array())},
                   {"failed", c.value("failed", json::array())},
                   {"engines", json::array()}};
@@ -219,6 +221,7 @@ std::expected<json, std::string> reportManifest(const std::string& results_dir,
               "energy of every integrator and engine");
     }
   }
+  m["headlines"] = reportHeadlines(m["comparisons"], m["stability"]["scenes"]);
   const fs::path bench = results / "bench" / "bench.json";
   m["bench"] = fs::exists(bench) ? json(bench.string()) : json();
   return m;

@@ -33,6 +33,14 @@ std::expected<Comparison, std::string> compareScene(const EngineRegistry& regist
     c.runs.push_back({engine, std::move(*record)});
   }
   for (const EngineRun& run : c.runs) c.engines.push_back(engineMetrics(c.model, run));
+  int best_order = 0;
+  for (std::size_t r = 0; r < c.runs.size(); ++r) {
+    const mysim::IntegratorInfo* info = mysim::findIntegrator(c.runs[r].record.integrator);
+    if (info && !info->adaptive() && info->order > best_order && !c.runs[r].record.blowup) {
+      best_order = info->order;
+      c.energy_reference = r;
+    }
+  }
   for (std::size_t i = 0; i < c.runs.size(); ++i) {
     for (std::size_t j = i + 1; j < c.runs.size(); ++j) {
       if (c.runs[i].record.blowup || c.runs[j].record.blowup) continue;

@@ -1,5 +1,6 @@
 // The files of a comparison: each run's own files, one table per concern and comparison.json,
 // each written whole or not at all, from metrics computed once (compareScene).
+#include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -138,12 +139,17 @@ Write writeNodeDistances(const std::string& path, const Comparison& c) {
 Write writeSeries(const std::string& path, const Comparison& c) {
   return writeFileAtomically(path, [&](std::ostream& series) {
     series.precision(10);
-    series << "engine,t,sag_lowest,sag_free_middle,penetration_deepest,energy_drift_total\n";
+    series << "engine,t,sag_lowest,sag_free_middle,penetration_deepest,energy_drift_total,"
+              "energy_drift_vs_reference\n";
     if (c.model.isCircle()) return;
+    const mysim::RunRecord* ref =
+        c.energy_reference ? &c.runs[*c.energy_reference].record : nullptr;
+    const EnergyDrift* ref_drift =
+        c.energy_reference ? &c.engines[*c.energy_reference].drift : nullptr;
     for (std::size_t r = 0; r < c.runs.size(); ++r) {
       const mysim::RunRecord& rec = c.runs[r].record;
       const EngineMetrics& m = c.engines[r];
-      for (std::size_t f = 0; f < rec.frames.size(); ++f) {
+      for (std::size_t f = 0, g = 0; f < rec.frames.size(); ++f) {
         series << csvField(c.runs[r].engine) << ',' << rec.times[f] << ',' << m.sag.lowest[f]
                << ',';
         if (!m.sag.free_middle.empty()) series << m.sag.free_middle[f];
@@ -151,6 +157,14 @@ Write writeSeries(const std::string& path, const Comparison& c) {
         if (!m.penetration_deepest.empty()) series << m.penetration_deepest[f];
         series << ',';
         if (f < m.drift.total.size()) series << m.drift.total[f];
+        series << ',';
+        // |drift - the reference's drift| at the times both sampled (not for the reference).
+        while (ref && g < ref->times.size() && ref->times[g] < rec.times[f]) ++g;
+        if (ref && r != *c.energy_reference && g < ref->times.size() &&
+            ref->times[g] == rec.times[f] && f < m.drift.total.size() &&
+            g < ref_drift->total.size()) {
+          series << std::abs(m.drift.total[f] - ref_drift->total[g]);
+        }
         series << '\n';
       }
     }
@@ -169,6 +183,7 @@ json comparisonJson(const Comparison& c) {
     j["refused"].push_back({{"engine", r.engine}, {"reason", r.reason}});
   }
   j["model"] = modelJson(c.model);
+  j["energy_reference"] = c.energy_reference ? json(c.runs[*c.energy_reference].engine) : json();
   for (std::size_t r = 0; r < c.engines.size(); ++r) {
     json e = metricsJson(c.engines[r]);
     // Where its run files are, and what stepped it (the scene's integrator for plain "mysim").

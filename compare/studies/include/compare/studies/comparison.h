@@ -23,6 +23,10 @@ struct Comparison {
   std::vector<Refusal> failed;
   std::vector<EngineMetrics> engines;
   std::vector<PairMetrics> pairs;  // every pair of runs that did not blow up
+  // The run the others' energy balance is read against in a damped scene, where the balance
+  // itself mostly shows the damping: the one stepped by the highest-order fixed-step integrator of
+  // the catalogue (RK4 among today's), if the comparison has it.
+  std::optional<std::size_t> energy_reference;
 };
 
 // Runs the engines; an engine that refuses the scene is listed in `refused`, one that fails in

@@ -1,5 +1,8 @@
 // The Bullet twins (reference/): each steps a Bullet world built from the model.
-#include "engines.h"
+#include "reference/bullet_engine.h"
+
+#include "compare/engines/engine_registry.h"
+#include "compare/engines/external_engine.h"
 
 namespace springcheck {
 

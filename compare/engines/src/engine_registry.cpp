@@ -2,11 +2,18 @@
 
 #include <algorithm>
 
-#include "engines.h"
+#include "compare/engines/external_engine.h"
 #include "mysim/run_limits.h"
 #include "mysim/scene_file.h"
+#include "reference/bullet_engine.h"
 
 namespace springcheck {
+
+// The registry's rows: one factory per engine kind, each in its own file (adding a built-in
+// engine: that file and a line in the constructor below).
+Engine mysimEngine();
+Engine bulletEngine(reference::BulletEngine engine);
+Engine externalEngine(const ExternalEngineSpec& spec);
 
 RunConfig runConfig(const mysim::Scene& scene) {
   return {scene.source,     scene.name,
@@ -15,7 +22,7 @@ RunConfig runConfig(const mysim::Scene& scene) {
 }
 
 EngineRegistry::EngineRegistry() {
-  // The built-in rows. Adding an engine: its file in engines/ and a row here.
+  // The built-in rows.
   engines_.push_back(mysimEngine());
   for (reference::BulletEngine e : reference::kBulletEngines) engines_.push_back(bulletEngine(e));
   sections_.push_back(reference::bulletSceneSection());

@@ -5,9 +5,11 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "engines.h"
+#include "compare/engines/engine_registry.h"
+#include "compare/engines/external_engine.h"
 #include "mysim/circle_system.h"
 #include "process.h"
+#include "reference/bullet_engine.h"
 
 namespace springcheck {
 

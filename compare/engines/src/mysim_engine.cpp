@@ -1,5 +1,7 @@
 // mysim: our simulator, stepped by the integrator the run names ("mysim:verlet" picks one).
-#include "engines.h"
+#include "compare/engines/engine_registry.h"
+#include "compare/engines/external_engine.h"
+#include "reference/bullet_engine.h"
 
 namespace springcheck {
 

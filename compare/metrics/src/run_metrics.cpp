@@ -103,27 +103,48 @@ std::optional<TrajectoryDistance> trajectoryDistance(const mysim::RunRecord& a,
 }
 
 const std::vector<MetricInfo>& metricCatalog() {
+  using E = const EngineMetrics&;
+  using P = const PairMetrics&;
+  using V = std::optional<double>;
   static const std::vector<MetricInfo> catalog = {
-      {"blowup", false, "1/0", "1 if the run blew up"},
-      {"closed_form_error", false, "m or rel", "error against the scene's closed form"},
-      {"sag_lowest", false, "m", "lowest point below the pins at the end"},
-      {"sag_free_middle", false, "m", "middle of the free edge below the pins at the end"},
-      {"penetration_max", false, "m", "deepest node inside a collider, any frame"},
-      {"penetration_mean_max", false, "m", "largest per-frame mean depth of penetrating nodes"},
-      {"energy_drift_max", false, "rel", "max |E(t) - E(0)| / E_ref"},
-      {"energy_rise", false, "J", "largest rise of total energy above an earlier low"},
-      {"settling_time", false, "s", "time after which KE stays below 1e-4 of its peak"},
-      {"max_strain", false, "rel", "largest |l / rest - 1| of any spring, any frame"},
+      {"blowup", false, "1/0", "1 if the run blew up",
+       [](E m) { return V(m.blew_up ? 1.0 : 0.0); }},
+      {"closed_form_error", false, "m or rel", "error against the scene's closed form",
+       [](E m) { return m.closed_form ? V(m.closed_form->error) : V(); }},
+      {"sag_lowest", false, "m", "lowest point below the pins at the end",
+       [](E m) { return V(m.sag_lowest); }},
+      {"sag_free_middle", false, "m", "middle of the free edge below the pins at the end",
+       [](E m) { return m.sag_free_middle; }},
+      {"penetration_max", false, "m", "deepest node inside a collider, any frame",
+       [](E m) { return V(m.penetration_max); }},
+      {"penetration_mean_max", false, "m", "largest per-frame mean depth of penetrating nodes",
+       [](E m) { return V(m.penetration_mean_max); }},
+      {"energy_drift_max", false, "rel", "max |E(t) - E(0)| / E_ref",
+       [](E m) { return V(m.drift.max_abs_total); }},
+      {"energy_rise", false, "J", "largest rise of total energy above an earlier low",
+       [](E m) { return V(m.drift.max_rise); }},
+      {"settling_time", false, "s", "time after which KE stays below 1e-4 of its peak",
+       [](E m) { return m.settling_time; }},
+      {"max_strain", false, "rel", "largest |l / rest - 1| of any spring, any frame",
+       [](E m) { return V(m.max_strain); }},
       {"linear_momentum_drift", false, "rel",
-       "max |P(t) - P(0) - M g t| / max sum m|v| (free bodies only)"},
+       "max |P(t) - P(0) - M g t| / max sum m|v| (free bodies only)",
+       [](E m) { return m.momentum ? V(m.momentum->linear) : V(); }},
       {"angular_momentum_drift", false, "rel",
-       "max |L(t) - L(0)| about the centre of mass / its scale (free bodies only)"},
-      {"drape_rms", true, "m", "RMS per-node distance of the final shapes"},
-      {"drape_max", true, "m", "max per-node distance of the final shapes"},
-      {"chamfer", true, "m", "symmetric Chamfer distance of the final surfaces"},
-      {"hausdorff", true, "m", "Hausdorff distance of the final surfaces"},
-      {"sag_difference", true, "m", "difference of the final lowest-point sag"},
-      {"trajectory_rms_max", true, "m", "max over frames of the RMS node distance"},
+       "max |L(t) - L(0)| about the centre of mass / its scale (free bodies only)",
+       [](E m) { return m.momentum ? V(m.momentum->angular) : V(); }},
+      {"drape_rms", true, "m", "RMS per-node distance of the final shapes", nullptr,
+       [](P m) { return V(m.drape.rms); }},
+      {"drape_max", true, "m", "max per-node distance of the final shapes", nullptr,
+       [](P m) { return V(m.drape.max); }},
+      {"chamfer", true, "m", "symmetric Chamfer distance of the final surfaces", nullptr,
+       [](P m) { return V(m.surface.chamfer); }},
+      {"hausdorff", true, "m", "Hausdorff distance of the final surfaces", nullptr,
+       [](P m) { return V(m.surface.hausdorff); }},
+      {"sag_difference", true, "m", "difference of the final lowest-point sag", nullptr,
+       [](P m) { return V(m.sag_difference); }},
+      {"trajectory_rms_max", true, "m", "max over frames of the RMS node distance", nullptr,
+       [](P m) { return m.trajectory_rms_max; }},
   };
   return catalog;
 }
@@ -136,35 +157,13 @@ const MetricInfo* findMetric(std::string_view name) {
 }
 
 std::optional<double> metricValue(const EngineMetrics& m, std::string_view name) {
-  if (name == "blowup") return m.blew_up ? 1.0 : 0.0;
-  if (name == "closed_form_error") {
-    return m.closed_form ? std::optional(m.closed_form->error) : std::nullopt;
-  }
-  if (name == "sag_lowest") return m.sag_lowest;
-  if (name == "sag_free_middle") return m.sag_free_middle;
-  if (name == "penetration_max") return m.penetration_max;
-  if (name == "penetration_mean_max") return m.penetration_mean_max;
-  if (name == "energy_drift_max") return m.drift.max_abs_total;
-  if (name == "energy_rise") return m.drift.max_rise;
-  if (name == "settling_time") return m.settling_time;
-  if (name == "max_strain") return m.max_strain;
-  if (name == "linear_momentum_drift") {
-    return m.momentum ? std::optional(m.momentum->linear) : std::nullopt;
-  }
-  if (name == "angular_momentum_drift") {
-    return m.momentum ? std::optional(m.momentum->angular) : std::nullopt;
-  }
-  return std::nullopt;
+  const MetricInfo* info = findMetric(name);
+  return info && info->of_run ? info->of_run(m) : std::nullopt;
 }
 
 std::optional<double> metricValue(const PairMetrics& m, std::string_view name) {
-  if (name == "drape_rms") return m.drape.rms;
-  if (name == "drape_max") return m.drape.max;
-  if (name == "chamfer") return m.surface.chamfer;
-  if (name == "hausdorff") return m.surface.hausdorff;
-  if (name == "sag_difference") return m.sag_difference;
-  if (name == "trajectory_rms_max") return m.trajectory_rms_max;
-  return std::nullopt;
+  const MetricInfo* info = findMetric(name);
+  return info && info->of_pair ? info->of_pair(m) : std::nullopt;
 }
 
 }  // namespace springcheck

@@ -1,4 +1,5 @@
 #pragma once
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -80,11 +81,15 @@ PairMetrics pairMetrics(const mysim::Model& model, const EngineRun& a, const Eng
 Surface surfaceOf(const mysim::Model& model, const mysim::ParticleRows& frame);
 
 // Metrics by name, for tolerance files and tables.
+// One row per metric: its name (what tolerance files and tables call it), unit, meaning, and
+// where its value is read from what engineMetrics / pairMetrics computed (one of the two).
 struct MetricInfo {
   std::string name;
   bool pair;  // a metric between two engines, else of one
   std::string unit;
   std::string description;
+  std::function<std::optional<double>(const EngineMetrics&)> of_run = nullptr;
+  std::function<std::optional<double>(const PairMetrics&)> of_pair = nullptr;
 };
 const std::vector<MetricInfo>& metricCatalog();
 const MetricInfo* findMetric(std::string_view name);

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "commands.h"
+#include "compare/io/text_format.h"
 #include "compare/studies/comparison.h"
 
 namespace springcheck {
@@ -15,15 +16,6 @@ struct CompareOptions {
   std::vector<std::string> engines_files;
   Timing timing;
 };
-
-std::vector<std::string> splitList(const std::string& text) {
-  std::vector<std::string> items;
-  std::stringstream in(text);
-  for (std::string item; std::getline(in, item, ',');) {
-    if (!item.empty()) items.push_back(item);
-  }
-  return items;
-}
 
 int compare(const CompareOptions& o) {
   const std::optional<EngineRegistry> registry = makeRegistry(o.engines_files);
@@ -63,8 +55,10 @@ void addCompareCommand(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<CompareOptions>();
   CLI::App* cmd = app.add_subcommand("compare", "Run a scene in several engines and compare");
   cmd->add_option("scene", o->scene_path, "Scene file (JSON)")->required();
-  cmd->add_option("--engines", o->engines,
-                  "Comma-separated engines (default: every engine, your own included; all: every engine with mysim once per integrator; all-fixed-step: the same without adaptive ones)");
+  cmd->add_option(
+      "--engines", o->engines,
+      "Comma-separated engines (default: every engine, your own included; all: every engine with "
+      "mysim once per integrator; all-fixed-step: the same without adaptive ones)");
   addEnginesFileOption(cmd, o->engines_files);
   cmd->add_option("--out", o->out, "Output directory (default out/compare/SCENE)");
   addTimingOptions(cmd, o->timing, 1);

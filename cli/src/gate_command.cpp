@@ -47,30 +47,9 @@ void addGateCommand(CLI::App& app, int& exit_code) {
     }
     const GateReport& report = *gate;
     printGate(std::cout, report);
-    if (!json_out->empty()) {
-      nlohmann::json results = nlohmann::json::array();
-      for (const CheckResult& r : report.results) {
-        results.push_back(
-            {{"scene", r.check.scene},
-             {"engines", r.check.engines},
-             {"metric", r.check.metric},
-             {"bound", r.check.bound},
-             {"why", r.check.why},
-             {"passed", r.passed},
-             {"problem", r.problem},
-             {"measured", r.measured ? nlohmann::json(*r.measured) : nlohmann::json()}});
-      }
-      const nlohmann::json all = {{"tolerances", *path}, {"checks", results}};
-      if (auto written = writeFileAtomically(
-              *json_out, [&](std::ostream& out) { out << all.dump(2) << '\n'; });
-          !written) {
-        std::cerr << "error: --json: " << written.error() << '\n';
-        exit_code = kFailure;
-        return;
-      }
-    }
     for (const auto& [file, flag, write] :
-         {std::tuple{*junit_out, "--junit", &writeJunit},
+         {std::tuple{*json_out, "--json", &writeGateJson},
+          std::tuple{*junit_out, "--junit", &writeJunit},
           std::tuple{*markdown_out, "--markdown", &writeGateMarkdown}}) {
       if (file.empty()) continue;
       if (auto written =

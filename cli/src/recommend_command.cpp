@@ -47,49 +47,97 @@ json choiceJson(const std::optional<Choice>& c) {
           {"summary", describe(*c)}};
 }
 
+// The table to recommend from: the target itself, or the table of the sweep it names (a spec,
+// or a sweep around a scene's step), run first. Empty (after a message) on failure; `code` says
+// which.
+std::string tableFor(const RecommendOptions& o, EngineRegistry& registry, int& code) {
+  if (fs::path(o.target).extension() == ".csv") return o.target;
+  // A sweep spec has "scenes"; anything else is read as a scene.
+  auto root = mysim::readJsonFile(o.target, "sweep spec or scene");
+  code = kBadInput;
+  if (!root) {
+    std::cerr << "error: " << root.error() << '\n';
+    return "";
+  }
+  std::expected<SweepSpec, std::string> spec = std::unexpected("");
+  if (root->is_object() && root->contains("scenes")) {
+    spec = loadSweepSpec(o.target, registry);
+  } else {
+    auto scene = registry.loadScene(o.target);
+    if (!scene) {
+      std::cerr << "error: " << scene.error() << '\n';
+      return "";
+    }
+    spec = sweepAroundScene(registry, o.target, std::move(*scene));
+  }
+  if (!spec) {
+    std::cerr << "error: " << spec.error() << '\n';
+    return "";
+  }
+  const std::string table =
+      o.table_out.empty() ? "out/recommend/" + spec->name + ".csv" : o.table_out;
+  std::error_code ec;
+  fs::create_directories(fs::path(table).parent_path(), ec);
+  SweepOptions options{.jobs = o.jobs,
+                       .repeats = o.timing.repeats,
+                       .threads = o.timing.threads,
+                       .fixed_threads = o.timing.fixed_threads,
+                       .resume = false};
+  auto progress = std::make_shared<Progress>("recommend " + spec->name, isatty(STDERR_FILENO));
+  options.progress = [progress](int done, int total) { progress->update(done, total); };
+  if (auto ran = runSweep(registry, *spec, table, options); !ran) {
+    std::cerr << "error: " << ran.error() << '\n';
+    code = kFailure;
+    return "";
+  }
+  code = kOk;
+  return table;
+}
+
+// Prints one recommendation and returns it as JSON: the best and the runner-up, every engine's
+// own cheapest (speed at equal accuracy), and mysim's best realtime factor over Bullet's best.
+json reportRecommendation(const Recommendation& r, Cost cost, const EngineRegistry& registry) {
+  std::cout << r.scene << " (stiffness x" << r.stiffness_scale << "), error <= " << r.max_error
+            << " m, cheapest by " << (cost == Cost::Work ? "work" : "wall time") << ":\n";
+  if (r.best) {
+    std::cout << "  best:      " << describe(*r.best) << '\n';
+    std::cout << "  runner-up: " << (r.runner_up ? describe(*r.runner_up) : "none") << '\n';
+  } else {
+    std::cout << "  none of the " << r.candidates << " finished runs stays under " << r.max_error
+              << " m\n";
+  }
+  std::cout << "  (" << r.meeting << " of " << r.candidates << " finished runs meet the bound; "
+            << "error against " << (r.best ? r.best->reference : "the sweep's reference") << ")\n";
+  json per_engine = json::array();
+  double mysim_best = 0.0, bullet_best = 0.0;
+  if (!r.per_engine.empty()) std::cout << "  each engine's cheapest under the bound:\n";
+  for (const Choice& c : r.per_engine) {
+    std::cout << "    " << describe(c) << '\n';
+    per_engine.push_back(choiceJson(c));
+    const Engine* engine = registry.find(c.engine);
+    const std::string kind = engine ? engine->kind : "";
+    if (kind == "mysim") mysim_best = std::max(mysim_best, c.realtime_factor);
+    if (kind == "bullet") bullet_best = std::max(bullet_best, c.realtime_factor);
+  }
+  json ratio = nullptr;
+  if (mysim_best > 0 && bullet_best > 0) {
+    ratio = mysim_best / bullet_best;
+    std::cout << "  mysim's best runs " << ratio.get<double>()
+              << "x the realtime factor of Bullet's best at this accuracy\n";
+  }
+  return {{"scene", r.scene},           {"stiffness_scale", r.stiffness_scale},
+          {"candidates", r.candidates}, {"meeting", r.meeting},
+          {"best", choiceJson(r.best)}, {"runner_up", choiceJson(r.runner_up)},
+          {"per_engine", per_engine},   {"mysim_over_bullet_realtime", ratio}};
+}
+
 int recommendCommand(const RecommendOptions& o) {
   const Cost cost = o.cost == "work" ? Cost::Work : Cost::WallTime;
   std::optional<EngineRegistry> registry = makeRegistry(o.engines_files);
   if (!registry) return kBadInput;
-  std::string table = o.target;
-  if (fs::path(o.target).extension() != ".csv") {
-    // A sweep spec has "scenes"; anything else is read as a scene.
-    auto root = mysim::readJsonFile(o.target, "sweep spec or scene");
-    if (!root) {
-      std::cerr << "error: " << root.error() << '\n';
-      return kBadInput;
-    }
-    std::expected<SweepSpec, std::string> spec = std::unexpected("");
-    if (root->is_object() && root->contains("scenes")) {
-      spec = loadSweepSpec(o.target, *registry);
-    } else {
-      auto scene = registry->loadScene(o.target);
-      if (!scene) {
-        std::cerr << "error: " << scene.error() << '\n';
-        return kBadInput;
-      }
-      spec = sweepAroundScene(*registry, o.target, std::move(*scene));
-    }
-    if (!spec) {
-      std::cerr << "error: " << spec.error() << '\n';
-      return kBadInput;
-    }
-    table = o.table_out.empty() ? "out/recommend/" + spec->name + ".csv" : o.table_out;
-    std::error_code ec;
-    fs::create_directories(fs::path(table).parent_path(), ec);
-    SweepOptions options;
-    options.jobs = o.jobs;
-    options.repeats = o.timing.repeats;
-    options.threads = o.timing.threads;
-    options.fixed_threads = o.timing.fixed_threads;
-    options.resume = false;
-    auto progress = std::make_shared<Progress>("recommend " + spec->name, isatty(STDERR_FILENO));
-    options.progress = [progress](int done, int total) { progress->update(done, total); };
-    if (auto ran = runSweep(*registry, *spec, table, options); !ran) {
-      std::cerr << "error: " << ran.error() << '\n';
-      return kFailure;
-    }
-  }
+  int code = kOk;
+  const std::string table = tableFor(o, *registry, code);
+  if (table.empty()) return code;
   auto rows = readSweepTable(table);
   if (!rows) {
     std::cerr << "error: " << rows.error() << '\n';
@@ -106,46 +154,8 @@ int recommendCommand(const RecommendOptions& o) {
               {"recommendations", json::array()}};
   bool all_met = true;
   for (const Recommendation& r : found) {
-    std::cout << r.scene << " (stiffness x" << r.stiffness_scale << "), error <= " << r.max_error
-              << " m, cheapest by " << (cost == Cost::Work ? "work" : "wall time") << ":\n";
-    if (r.best) {
-      std::cout << "  best:      " << describe(*r.best) << '\n';
-      std::cout << "  runner-up: " << (r.runner_up ? describe(*r.runner_up) : "none") << '\n';
-    } else {
-      all_met = false;
-      std::cout << "  none of the " << r.candidates << " finished runs stays under " << r.max_error
-                << " m\n";
-    }
-    std::cout << "  (" << r.meeting << " of " << r.candidates << " finished runs meet the bound; "
-              << "error against " << (r.best ? r.best->reference : "the sweep's reference")
-              << ")\n";
-    // Speed at equal accuracy: every engine's own best, and mysim's best realtime factor over
-    // the best Bullet engine's.
-    json per_engine = json::array();
-    double mysim_best = 0.0, bullet_best = 0.0;
-    if (!r.per_engine.empty()) std::cout << "  each engine's cheapest under the bound:\n";
-    for (const Choice& c : r.per_engine) {
-      std::cout << "    " << describe(c) << '\n';
-      per_engine.push_back(choiceJson(c));
-      const Engine* engine = registry->find(c.engine);
-      const std::string kind = engine ? engine->kind : "";
-      if (kind == "mysim") mysim_best = std::max(mysim_best, c.realtime_factor);
-      if (kind == "bullet") bullet_best = std::max(bullet_best, c.realtime_factor);
-    }
-    json ratio = nullptr;
-    if (mysim_best > 0 && bullet_best > 0) {
-      ratio = mysim_best / bullet_best;
-      std::cout << "  mysim's best runs " << ratio.get<double>()
-                << "x the realtime factor of Bullet's best at this accuracy\n";
-    }
-    out["recommendations"].push_back({{"scene", r.scene},
-                                      {"stiffness_scale", r.stiffness_scale},
-                                      {"candidates", r.candidates},
-                                      {"meeting", r.meeting},
-                                      {"best", choiceJson(r.best)},
-                                      {"runner_up", choiceJson(r.runner_up)},
-                                      {"per_engine", per_engine},
-                                      {"mysim_over_bullet_realtime", ratio}});
+    all_met &= r.best.has_value();
+    out["recommendations"].push_back(reportRecommendation(r, cost, *registry));
   }
   if (!o.json_out.empty()) {
     if (auto written = writeFileAtomically(

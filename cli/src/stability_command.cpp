@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "commands.h"
+#include "compare/io/text_format.h"
 #include "compare/studies/stability_extremes.h"
 #include "compare/studies/stability_grids.h"
 
@@ -29,11 +30,7 @@ struct StabilityOptions {
   int jobs = 0;
 };
 
-std::string brief(const std::optional<double>& v) {
-  char text[32] = "";
-  if (v) std::snprintf(text, sizeof text, "%.4g", *v);
-  return text;
-}
+std::string brief(const std::optional<double>& v) { return formatNumber(v, 4); }
 
 // Progress on stderr every tenth of the cells.
 GridProgress progressLine(const std::string& what) {

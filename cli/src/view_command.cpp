@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "commands.h"
+#include "compare/io/text_format.h"
 #include "data_dir.h"
 #include "viewer/window.h"
 
@@ -23,11 +24,7 @@ struct ViewOptions {
 int view(const ViewOptions& o) {
   std::optional<springcheck::EngineRegistry> registry = makeRegistry(o.engines_files);
   if (!registry) return kBadInput;
-  std::vector<std::string> engines;
-  std::stringstream list(o.engines);
-  for (std::string e; std::getline(list, e, ',');) {
-    if (!e.empty()) engines.push_back(e);
-  }
+  const std::vector<std::string> engines = springcheck::splitList(o.engines);
   if (!o.screenshot.empty() && o.frames <= 0) {
     std::cerr << "error: --screenshot needs --frames N\n";
     return kBadInput;

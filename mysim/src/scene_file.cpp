@@ -224,17 +224,8 @@ bool isPlainName(const std::string& name) {
   });
 }
 
-Scene readScene(const json& root, const std::vector<EngineSection>& sections) {
-  Scene scene;
-  FieldReader top(root, "");
-  scene.name = top.text("name", "");
-  // The name names output folders: one plain path component, never "..", "/" or a hidden name.
-  if (!scene.name.empty() && !isPlainName(scene.name)) {
-    failField("name", "letters, digits, '.', '_' or '-' (not starting with '.'; at most 100)",
-              top.raw("name"));
-  }
-  scene.description = top.text("description", "");
-
+// "system": which kind, and its own fields.
+void readSystem(FieldReader& top, Scene& scene) {
   FieldReader system = top.object("system");
   const std::string type = system.text("type");
   if (type == "circle") {
@@ -254,22 +245,10 @@ Scene readScene(const json& root, const std::vector<EngineSection>& sections) {
               system.raw("type"));
   }
   system.refuseUnknown("docs/scenes.md");
+}
 
-  if (top.has("forces")) {
-    FieldReader forces = top.object("forces");
-    readForces(forces, scene);
-    forces.refuseUnknown("docs/scenes.md");
-  }
-  if (top.has("sphere")) {  // the seed's one sphere, kept as its own field
-    FieldReader r = top.object("sphere");
-    scene.colliders.push_back(Sphere::read(r));
-    r.refuseUnknown("docs/scenes.md");
-  }
-  if (top.has("colliders")) {
-    top.objects("colliders",
-                [&](FieldReader& r, std::size_t) { scene.colliders.push_back(readCollider(r)); });
-  }
-
+// "integrator": method (canonical name), step, duration and each method's settings.
+void readIntegrator(FieldReader& top, Scene& scene) {
   FieldReader integ = top.object("integrator");
   IntegratorSettings& is = scene.integrator;
   is.name = integ.text("name", "rk4");
@@ -289,21 +268,12 @@ Scene readScene(const json& root, const std::vector<EngineSection>& sections) {
     is.preconditioner = *preconditioner;
   }
   integ.refuseUnknown("docs/scenes.md");
+}
 
-  if (top.has("output")) {
-    FieldReader r = top.object("output");
-    scene.sample_interval = r.nonNegative("sample_interval", 0.0);
-    r.refuseUnknown("docs/scenes.md");
-  }
-  if (top.has("blowup")) {
-    FieldReader r = top.object("blowup");
-    scene.limits.max_strain = r.positive("max_strain", scene.limits.max_strain);
-    scene.limits.max_energy_ratio = r.positive("max_energy_ratio", scene.limits.max_energy_ratio);
-    scene.limits.max_energy_rise = r.positive("max_energy_rise", scene.limits.max_energy_rise);
-    scene.limits.max_energy_rise_damped =
-        r.positive("max_energy_rise_damped", scene.limits.max_energy_rise_damped);
-    r.refuseUnknown("docs/scenes.md");
-  }
+// The sections engines declare ("bullet"): each setting checked against its declaration, the
+// declared default where the scene is silent.
+void readEngineSections(FieldReader& top, const std::vector<EngineSection>& sections,
+                        Scene& scene) {
   for (const EngineSection& section : sections) {
     std::map<std::string, double>& values = scene.engine_settings[section.name];
     for (const EngineSetting& setting : section.settings) values[setting.key] = setting.fallback;
@@ -319,6 +289,53 @@ Scene readScene(const json& root, const std::vector<EngineSection>& sections) {
     }
     r.refuseUnknown("docs/scenes.md");
   }
+}
+
+Scene readScene(const json& root, const std::vector<EngineSection>& sections) {
+  Scene scene;
+  FieldReader top(root, "");
+  scene.name = top.text("name", "");
+  // The name names output folders: one plain path component, never "..", "/" or a hidden name.
+  if (!scene.name.empty() && !isPlainName(scene.name)) {
+    failField("name", "letters, digits, '.', '_' or '-' (not starting with '.'; at most 100)",
+              top.raw("name"));
+  }
+  scene.description = top.text("description", "");
+
+  readSystem(top, scene);
+
+  if (top.has("forces")) {
+    FieldReader forces = top.object("forces");
+    readForces(forces, scene);
+    forces.refuseUnknown("docs/scenes.md");
+  }
+  if (top.has("sphere")) {  // the seed's one sphere, kept as its own field
+    FieldReader r = top.object("sphere");
+    scene.colliders.push_back(Sphere::read(r));
+    r.refuseUnknown("docs/scenes.md");
+  }
+  if (top.has("colliders")) {
+    top.objects("colliders",
+                [&](FieldReader& r, std::size_t) { scene.colliders.push_back(readCollider(r)); });
+  }
+
+  readIntegrator(top, scene);
+
+  if (top.has("output")) {
+    FieldReader r = top.object("output");
+    scene.sample_interval = r.nonNegative("sample_interval", 0.0);
+    r.refuseUnknown("docs/scenes.md");
+  }
+  if (top.has("blowup")) {
+    FieldReader r = top.object("blowup");
+    scene.limits.max_strain = r.positive("max_strain", scene.limits.max_strain);
+    scene.limits.max_energy_ratio = r.positive("max_energy_ratio", scene.limits.max_energy_ratio);
+    scene.limits.max_energy_rise = r.positive("max_energy_rise", scene.limits.max_energy_rise);
+    scene.limits.max_energy_rise_damped =
+        r.positive("max_energy_rise_damped", scene.limits.max_energy_rise_damped);
+    r.refuseUnknown("docs/scenes.md");
+  }
+  readEngineSections(top, sections, scene);
   top.refuseUnknown("docs/scenes.md");
   checkWhole(scene);
   return scene;

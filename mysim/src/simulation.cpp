@@ -47,6 +47,22 @@ long sampleStride(const RunSettings& settings) {
   return std::max(1L, stepCount(settings) / 200);
 }
 
+namespace {
+
+// A passive scene's total energy risen above its lowest earlier value by more than the limit:
+// the bounded instability, reported as a blow-up at that frame.
+std::optional<BlowUp> energyRise(double total, double lowest, double limit, double t, long step) {
+  const double rise = total - lowest;
+  if (rise <= limit) return std::nullopt;
+  return BlowUp{t, step, "energy-rise",
+                "total energy " + std::to_string(rise) +
+                    " J above its lowest earlier value, more than " + std::to_string(limit) +
+                    " J (blowup.max_energy_rise, or max_energy_rise_damped with drag, of the "
+                    "energy scale): a passive scene cannot gain energy"};
+}
+
+}  // namespace
+
 RunRecord simulate(OdeSystem& system, Stepper& stepper, State state, const RunSettings& settings) {
   using Clock = std::chrono::steady_clock;
   RunRecord record;
@@ -89,15 +105,8 @@ RunRecord simulate(OdeSystem& system, Stepper& stepper, State state, const RunSe
     if (step % stride == 0 || step == steps) {
       const std::optional<EnergyTerms> e = energyOf(system, state, external_work);
       if (rise_limit && e) {
-        const double rise = e->total() - lowest;
-        if (rise > *rise_limit) {
-          record.blowup = BlowUp{
-              state.t, step, "energy-rise",
-              "total energy " + std::to_string(rise) +
-                  " J above its lowest earlier value, more than " + std::to_string(*rise_limit) +
-                  " J (blowup.max_energy_rise, or max_energy_rise_damped with drag, of the "
-                  "energy scale): a "
-                  "passive scene cannot gain energy"};
+        if (auto rise = energyRise(e->total(), lowest, *rise_limit, state.t, step)) {
+          record.blowup = rise;
           break;
         }
         lowest = std::min(lowest, e->total());

@@ -9,9 +9,9 @@
 #include <iostream>
 #include <thread>
 
+#include "engine_drawing.h"
 #include "mysim/cloth_mesh.h"
 #include "mysim/particle_system.h"
-#include "collider_drawing.h"
 #include "png_writer.h"
 #include "text.h"
 
@@ -81,75 +81,6 @@ void lookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target) {
                         s.z(), u.z(), -f.z(), 0, 0,     0,     0,      1};
   glMultMatrixd(m);
   glTranslated(-eye.x(), -eye.y(), -eye.z());
-}
-
-void drawEngine(const ViewerSession& session, const EngineView& e) {
-  if (!e.system) return;
-  const auto rows = e.system->particleRows(e.state);
-  const mysim::ParticleSystem* ps = e.system->particles();
-  if (!ps) {  // the circle: the exact orbit and the point
-    glDisable(GL_LIGHTING);
-    glColor3f(0.5f, 0.5f, 0.5f);
-    glBegin(GL_LINE_LOOP);
-    for (int k = 0; k < 128; ++k)
-      glVertex3d(std::cos(2 * M_PI * k / 128), std::sin(2 * M_PI * k / 128), 0);
-    glEnd();
-    glPointSize(10);
-    glColor3f(1.0f, 0.8f, 0.2f);
-    glBegin(GL_POINTS);
-    glVertex3d(rows(0, 0), rows(0, 1), 0);
-    glEnd();
-    return;
-  }
-  const mysim::Model& model = ps->model();
-  glEnable(GL_LIGHTING);
-  for (const mysim::Collider& c : model.colliders) drawCollider(c, model, rows);
-  if (model.grid && session.shaded()) {
-    mysim::Vector x(3 * rows.rows());
-    for (int p = 0; p < rows.rows(); ++p) x.segment<3>(3 * p) = rows.row(p).head<3>().transpose();
-    const std::vector<mysim::Vec3> normals = mysim::vertexNormals(*model.grid, x);
-    glEnable(GL_LIGHTING);
-    glColor3f(0.85f, 0.35f, 0.25f);
-    glBegin(GL_TRIANGLES);
-    for (const Eigen::Vector3i& t : mysim::gridTriangles(*model.grid)) {
-      for (int k = 0; k < 3; ++k) {
-        glNormal3d(normals[t[k]].x(), normals[t[k]].y(), normals[t[k]].z());
-        glVertex3d(rows(t[k], 0), rows(t[k], 1), rows(t[k], 2));
-      }
-    }
-    glEnd();
-  } else {
-    glDisable(GL_LIGHTING);
-    glBegin(GL_LINES);
-    for (const mysim::Spring& s : model.springs) {
-      switch (s.family) {
-        case mysim::SpringFamily::Shear:
-          glColor3f(0.4f, 0.7f, 1.0f);
-          break;
-        case mysim::SpringFamily::Flex:
-          glColor3f(0.5f, 0.9f, 0.5f);
-          break;
-        default:
-          glColor3f(0.95f, 0.95f, 0.95f);
-      }
-      glVertex3d(rows(s.i, 0), rows(s.i, 1), rows(s.i, 2));
-      glVertex3d(rows(s.j, 0), rows(s.j, 1), rows(s.j, 2));
-    }
-    glEnd();
-  }
-  glDisable(GL_LIGHTING);
-  glPointSize(model.grid ? 3 : 7);
-  glBegin(GL_POINTS);
-  for (int p = 0; p < rows.rows(); ++p) {
-    if (model.grid && session.shaded() && !model.pinned[p]) continue;
-    if (model.pinned[p]) {
-      glColor3f(1.0f, 0.2f, 0.2f);
-    } else {
-      glColor3f(1.0f, 0.85f, 0.3f);
-    }
-    glVertex3d(rows(p, 0), rows(p, 1), rows(p, 2));
-  }
-  glEnd();
 }
 
 std::string format(const char* fmt, double v) {
@@ -255,8 +186,8 @@ void render(ViewerSession& session, const Text& text, int width, int height,
   }
   glEnd();
 
-  std::string top = session.config().scene_name + "    t " + format("%.2f s", session.time()) + "    dt " +
-                    format("%.4g s", session.dt()) + "    " + rate;
+  std::string top = session.config().scene_name + "    t " + format("%.2f s", session.time()) +
+                    "    dt " + format("%.4g s", session.dt()) + "    " + rate;
   if (session.speed() < 0.99) top += "    slow motion x" + format("%.2f", session.speed());
   if (session.paused()) top += "    paused";
   if (session.togglesApply()) {
@@ -325,36 +256,8 @@ std::string nextScreenshotPath(const std::string& dir) {
   }
 }
 
-}  // namespace
-
-int runWindow(ViewerSession& session, const WindowOptions& options) {
-  if (!glfwInit()) {
-    std::cerr << "error: cannot open a window (no display? run under xvfb-run for a headless "
-                 "machine)\n";
-    return 1;
-  }
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 2);
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 1);
-  GLFWwindow* window =
-      glfwCreateWindow(options.width, options.height, "springcheck view", nullptr, nullptr);
-  if (!window) {
-    std::cerr << "error: cannot create an OpenGL 2.1 window\n";
-    glfwTerminate();
-    return 1;
-  }
-  glfwMakeContextCurrent(window);
-  glfwSwapInterval(options.frames > 0 ? 0 : 1);
-  auto close = [&](int code) {
-    glfwDestroyWindow(window);
-    glfwTerminate();
-    return code;
-  };
-  Text text;
-  if (std::string error; !text.load(viewerFontFile(), 15.0f, error)) {
-    std::cerr << "error: " << error << '\n';
-    return close(1);
-  }
-  WindowState ws{&session};
+// Input callbacks on the session, and the fixed light of every frame.
+void setUpWindow(GLFWwindow* window, WindowState& ws) {
   glfwSetWindowUserPointer(window, &ws);
   glfwSetKeyCallback(window, keyCallback);
   glfwSetMouseButtonCallback(window, mouseButtonCallback);
@@ -368,6 +271,57 @@ int runWindow(ViewerSession& session, const WindowOptions& options) {
   glLightModelfv(GL_LIGHT_MODEL_AMBIENT, ambient);
   glShadeModel(GL_SMOOTH);
   glEnable(GL_NORMALIZE);
+}
+
+// p: the next free screenshot name in the folder; says where it went, or that it could not.
+void saveRequestedScreenshot(const std::string& dir, int width, int height) {
+  const std::string path = nextScreenshotPath(dir);
+  if (saveScreenshot(path, width, height)) {
+    std::printf("view: saved %s\n", path.c_str());
+  } else {
+    std::fprintf(stderr, "error: cannot write %s\n", path.c_str());
+  }
+  std::fflush(stdout);
+}
+
+// An OpenGL 2.1 window with its context current, or null (after saying why).
+GLFWwindow* openWindow(const WindowOptions& options) {
+  if (!glfwInit()) {
+    std::cerr << "error: cannot open a window (no display? run under xvfb-run for a headless "
+                 "machine)\n";
+    return nullptr;
+  }
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 2);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 1);
+  GLFWwindow* window =
+      glfwCreateWindow(options.width, options.height, "springcheck view", nullptr, nullptr);
+  if (!window) {
+    std::cerr << "error: cannot create an OpenGL 2.1 window\n";
+    glfwTerminate();
+    return nullptr;
+  }
+  glfwMakeContextCurrent(window);
+  glfwSwapInterval(options.frames > 0 ? 0 : 1);
+  return window;
+}
+
+}  // namespace
+
+int runWindow(ViewerSession& session, const WindowOptions& options) {
+  GLFWwindow* window = openWindow(options);
+  if (!window) return 1;
+  auto close = [&](int code) {
+    glfwDestroyWindow(window);
+    glfwTerminate();
+    return code;
+  };
+  Text text;
+  if (std::string error; !text.load(viewerFontFile(), 15.0f, error)) {
+    std::cerr << "error: " << error << '\n';
+    return close(1);
+  }
+  WindowState ws{&session};
+  setUpWindow(window, ws);
   std::printf("view: %s\n", session.summary().c_str());
   std::fflush(stdout);
 
@@ -398,13 +352,7 @@ int runWindow(ViewerSession& session, const WindowOptions& options) {
     render(session, text, width, height, rate);
     if (ws.screenshot_requested) {
       ws.screenshot_requested = false;
-      const std::string path = nextScreenshotPath(options.screenshot_dir);
-      if (saveScreenshot(path, width, height)) {
-        std::printf("view: saved %s\n", path.c_str());
-      } else {
-        std::fprintf(stderr, "error: cannot write %s\n", path.c_str());
-      }
-      std::fflush(stdout);
+      saveRequestedScreenshot(options.screenshot_dir, width, height);
     }
     if (options.frames > 0 && frame >= options.frames) {
       if (!options.screenshot.empty() && !saveScreenshot(options.screenshot, width, height)) {

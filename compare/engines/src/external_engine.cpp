@@ -7,6 +7,7 @@
 
 #include "compare/engines/engine_registry.h"
 #include "compare/engines/external_engine.h"
+#include "compare/io/text_format.h"
 #include "mysim/circle_system.h"
 #include "process.h"
 #include "reference/bullet_engine.h"
@@ -39,11 +40,7 @@ class ScratchDir {
   std::string path_;
 };
 
-std::string number(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", v);
-  return text;
-}
+std::string number(double v) { return formatNumber(v, 17); }  // round-trips exactly
 
 // Replays an engine's frames through the run loop: at each step a frame was asked for, the state
 // becomes that frame; between frames only the time moves (those states are never recorded).

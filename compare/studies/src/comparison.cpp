@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "compare/io/text_format.h"
+
 namespace springcheck {
 
 std::expected<Comparison, std::string> compareScene(const EngineRegistry& registry,
@@ -52,12 +54,7 @@ std::expected<Comparison, std::string> compareScene(const EngineRegistry& regist
 
 namespace {
 
-std::string format(const std::optional<double>& v) {
-  if (!v) return "-";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", *v);
-  return text;
-}
+std::string format(const std::optional<double>& v) { return formatNumber(v, 4, "-"); }
 
 }  // namespace
 

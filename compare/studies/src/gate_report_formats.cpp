@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 
 namespace springcheck {
 namespace {
@@ -117,6 +118,22 @@ void writeGateMarkdown(std::ostream& out, const GateReport& report, const std::s
         << (r->measured ? numberText(*r->measured) : cell(r->problem)) << " | "
         << numberText(r->check.bound) << " |\n";
   }
+}
+
+void writeGateJson(std::ostream& out, const GateReport& report, const std::string& tolerances) {
+  nlohmann::json results = nlohmann::json::array();
+  for (const CheckResult& r : report.results) {
+    results.push_back({{"scene", r.check.scene},
+                       {"engines", r.check.engines},
+                       {"metric", r.check.metric},
+                       {"bound", r.check.bound},
+                       {"why", r.check.why},
+                       {"passed", r.passed},
+                       {"problem", r.problem},
+                       {"measured", r.measured ? nlohmann::json(*r.measured) : nlohmann::json()}});
+  }
+  const nlohmann::json all = {{"tolerances", tolerances}, {"checks", results}};
+  out << all.dump(2) << '\n';
 }
 
 }  // namespace springcheck

@@ -10,46 +10,61 @@
 
 namespace springcheck {
 
-double highestFrequency(const mysim::Model& model) {
-  const int particles = model.particleCount();
-  std::vector<int> free;  // particle of each free slot
-  for (int p = 0; p < particles; ++p) {
-    if (!model.pinned[p]) free.push_back(p);
-  }
-  const int n = 3 * static_cast<int>(free.size());
-  if (n == 0 || model.springs.empty()) return 0.0;
-  std::vector<int> slot(particles, -1);
-  for (std::size_t s = 0; s < free.size(); ++s) slot[free[s]] = static_cast<int>(s);
+namespace {
 
-  // Each spring's 3x3 block at the start state; K x sums them (K_ii = sum J, K_ij = -J).
-  std::vector<mysim::Mat3> blocks;
-  blocks.reserve(model.springs.size());
-  const auto& x0 = model.start_position;
-  for (const mysim::Spring& s : model.springs) {
-    blocks.push_back(mysim::springElasticJacobianDefinite(
-        x0.segment<3>(3 * s.i), x0.segment<3>(3 * s.j), s.rest_length, s.stiffness));
+// M^-1/2 K M^-1/2 on the free coordinates of a model at its start state (pinned ones held at
+// zero), applied spring by spring: K x sums each spring's 3x3 block (K_ii = sum J, K_ij = -J).
+class MassNormalisedStiffness {
+ public:
+  explicit MassNormalisedStiffness(const mysim::Model& model) : model_(model) {
+    const int particles = model.particleCount();
+    std::vector<int> free;  // particle of each free slot
+    for (int p = 0; p < particles; ++p) {
+      if (!model.pinned[p]) free.push_back(p);
+    }
+    n_ = 3 * static_cast<int>(free.size());
+    slot_.assign(particles, -1);
+    for (std::size_t s = 0; s < free.size(); ++s) slot_[free[s]] = static_cast<int>(s);
+    blocks_.reserve(model.springs.size());
+    const auto& x0 = model.start_position;
+    for (const mysim::Spring& s : model.springs) {
+      blocks_.push_back(mysim::springElasticJacobianDefinite(
+          x0.segment<3>(3 * s.i), x0.segment<3>(3 * s.j), s.rest_length, s.stiffness));
+    }
+    inv_sqrt_mass_.resize(n_);
+    for (std::size_t s = 0; s < free.size(); ++s) {
+      inv_sqrt_mass_.segment<3>(3 * s).setConstant(1.0 / std::sqrt(model.mass[free[s]]));
+    }
   }
-  Eigen::VectorXd inv_sqrt_mass(n);
-  for (std::size_t s = 0; s < free.size(); ++s) {
-    inv_sqrt_mass.segment<3>(3 * s).setConstant(1.0 / std::sqrt(model.mass[free[s]]));
-  }
-  // y = M^-1/2 K M^-1/2 v on the free coordinates (pinned ones are held at zero).
-  auto apply = [&](const Eigen::VectorXd& v, Eigen::VectorXd& y) {
-    const Eigen::VectorXd u = inv_sqrt_mass.cwiseProduct(v);
-    y.setZero(n);
-    for (std::size_t k = 0; k < model.springs.size(); ++k) {
-      const int a = slot[model.springs[k].i], b = slot[model.springs[k].j];
+  int size() const { return n_; }
+
+  void apply(const Eigen::VectorXd& v, Eigen::VectorXd& y) const {
+    const Eigen::VectorXd u = inv_sqrt_mass_.cwiseProduct(v);
+    y.setZero(n_);
+    for (std::size_t k = 0; k < model_.springs.size(); ++k) {
+      const int a = slot_[model_.springs[k].i], b = slot_[model_.springs[k].j];
       const mysim::Vec3 ua = a >= 0 ? mysim::Vec3(u.segment<3>(3 * a)) : mysim::Vec3::Zero();
       const mysim::Vec3 ub = b >= 0 ? mysim::Vec3(u.segment<3>(3 * b)) : mysim::Vec3::Zero();
-      const mysim::Vec3 f = blocks[k] * (ua - ub);
+      const mysim::Vec3 f = blocks_[k] * (ua - ub);
       if (a >= 0) y.segment<3>(3 * a) += f;
       if (b >= 0) y.segment<3>(3 * b) -= f;
     }
-    y = inv_sqrt_mass.cwiseProduct(y);
-  };
+    y = inv_sqrt_mass_.cwiseProduct(y);
+  }
 
-  // Lanczos with full reorthogonalisation: the extreme Ritz value converges first, even when the
-  // top of the spectrum is crowded (a cloth's is). The basis is capped at ~32 MB.
+ private:
+  const mysim::Model& model_;
+  int n_ = 0;
+  std::vector<int> slot_;  // free slot of each particle, -1 if pinned
+  std::vector<mysim::Mat3> blocks_;
+  Eigen::VectorXd inv_sqrt_mass_;
+};
+
+// The largest eigenvalue of a symmetric operator by Lanczos with full reorthogonalisation: the
+// extreme Ritz value converges first, even when the top of the spectrum is crowded (a cloth's
+// is). The basis is capped at ~32 MB. Seeded: the same answer every run.
+double largestEigenvalue(const MassNormalisedStiffness& op) {
+  const int n = op.size();
   const int steps = std::min({n, 100, std::max(30, 4'000'000 / n)});
   Eigen::MatrixXd basis(n, steps);
   std::vector<double> alpha, beta;
@@ -60,7 +75,7 @@ double highestFrequency(const mysim::Model& model) {
   q.normalize();
   for (int k = 0; k < steps; ++k) {
     basis.col(k) = q;
-    apply(q, w);
+    op.apply(q, w);
     alpha.push_back(q.dot(w));
     // Against every earlier vector, twice ("twice is enough", Kahan-Parlett).
     for (int pass = 0; pass < 2; ++pass) {
@@ -77,7 +92,15 @@ double highestFrequency(const mysim::Model& model) {
   for (int k = 0; k + 1 < m; ++k) off[k] = beta[k];
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver;
   solver.computeFromTridiagonal(diagonal, off, Eigen::EigenvaluesOnly);
-  return std::sqrt(std::max(0.0, solver.eigenvalues().maxCoeff()));
+  return solver.eigenvalues().maxCoeff();
+}
+
+}  // namespace
+
+double highestFrequency(const mysim::Model& model) {
+  const MassNormalisedStiffness op(model);
+  if (op.size() == 0 || model.springs.empty()) return 0.0;
+  return std::sqrt(std::max(0.0, largestEigenvalue(op)));
 }
 
 }  // namespace springcheck

@@ -6,19 +6,14 @@
 
 #include "compare/io/atomic_file.h"
 #include "compare/io/csv.h"
+#include "compare/io/text_format.h"
 #include "compare/studies/parallel_jobs.h"
 #include "mysim/thread_budget.h"
 
 namespace springcheck {
 namespace {
 
-std::string cell(const std::optional<double>& v) {
-  if (!v) return "";
-  std::ostringstream s;
-  s.precision(8);
-  s << *v;
-  return s.str();
-}
+std::string cell(const std::optional<double>& v) { return formatNumber(v, 8); }
 
 // Counts finished cells for a progress callback, one report at a time.
 class Counter {

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "compare/io/text_format.h"
 #include "mysim/json_input.h"
 
 namespace springcheck {
@@ -14,12 +15,7 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-std::string number(double v) {
-  std::ostringstream out;
-  out.precision(10);
-  out << v;
-  return out.str();
-}
+std::string number(double v) { return formatNumber(v, 10); }
 
 // True when `interval` is a whole multiple of `dt` (to 1e-9 relative).
 bool multipleOf(double interval, double dt) {
@@ -28,6 +24,82 @@ bool multipleOf(double interval, double dt) {
 }
 
 constexpr const char* kSchema = "docs/sweeps.md";
+
+// The engines (default mysim) and the integrators of those that take one (default RK4).
+void readEngines(mysim::FieldReader& top, const EngineRegistry& registry, SweepSpec& s) {
+  using mysim::FieldError;
+  s.engines = top.has("engines") ? top.textList("engines") : std::vector<std::string>{"mysim"};
+  for (const std::string& e : s.engines) {
+    if (e.find(':') != std::string::npos) {
+      throw FieldError{"engines", "list integrators under \"integrators\", not as " + e};
+    }
+    if (auto ok = registry.check(e); !ok) throw FieldError{"engines", ok.error()};
+    if (registry.find(e)->takes_integrator) s.integrator_engines.push_back(e);
+  }
+  s.integrators.clear();
+  for (const std::string& name :
+       top.has("integrators") ? top.textList("integrators") : std::vector<std::string>{"rk4"}) {
+    auto canonical = mysim::canonicalIntegratorName(name);
+    if (!canonical) throw FieldError{"integrators", canonical.error()};
+    s.integrators.push_back(*canonical);
+  }
+}
+
+// The steps (each within every scene's duration), the stiffness and tolerance axes, the duration
+// and the sampling (a multiple of every step, so all runs' frames line up).
+void readSteps(mysim::FieldReader& top, SweepSpec& s) {
+  using mysim::FieldError;
+  s.dts = top.positiveList("dt");
+  if (top.has("stiffness_scale")) s.stiffness_scales = top.positiveList("stiffness_scale");
+  if (top.has("tolerance")) s.tolerances = top.positiveList("tolerance");
+  if (top.has("duration")) s.duration = top.positive("duration");
+  s.sample_interval =
+      top.positive("sample_interval", *std::max_element(s.dts.begin(), s.dts.end()));
+  for (std::size_t k = 0; k < s.dts.size(); ++k) {
+    if (!multipleOf(s.sample_interval, s.dts[k])) {
+      throw FieldError{"sample_interval", number(s.sample_interval) +
+                                              " s is not a multiple of dt " + number(s.dts[k]) +
+                                              " s (frames of all runs must line up)"};
+    }
+    // Every scene's run (or the spec's duration) must hold at least one step.
+    for (const auto& [path, scene] : s.loaded) {
+      const double duration = s.duration.value_or(scene.duration);
+      if (s.dts[k] > duration) {
+        throw FieldError{"dt[" + std::to_string(k) + "]",
+                         "a step no longer than the duration (" + number(s.dts[k]) + " s > " +
+                             number(duration) + " s of " + path + ")"};
+      }
+    }
+  }
+}
+
+// What every row is measured against: the closed form, the case's own engine ("self"), or a
+// converged run of one integrator.
+void readReference(mysim::FieldReader& top, SweepSpec& s) {
+  using mysim::FieldError;
+  const json& ref = top.raw("reference");
+  if (ref.is_string() && ref.get<std::string>() == "closed_form") {
+    s.reference_closed_form = true;
+  } else if (ref.is_string() && ref.get<std::string>() == "self") {
+    s.reference_self = true;
+  } else if (ref.is_object()) {
+    mysim::FieldReader r = top.object("reference");
+    if (r.has("integrator") && r.has("self")) {
+      throw FieldError{"reference", "either \"integrator\" or \"self\", not both"};
+    }
+    s.reference_self = r.boolean("self", false);
+    auto name = mysim::canonicalIntegratorName(r.text("integrator", "rk4"));
+    if (!name) throw FieldError{"reference.integrator", name.error()};
+    s.reference_integrator = *name;
+    s.reference_refine = static_cast<int>(r.integer("refine", 1, 1'000'000, 16));
+    r.refuseUnknown(kSchema);
+  } else {
+    mysim::failField("reference",
+                     "\"closed_form\", \"self\", {\"integrator\": NAME, \"refine\": N} or "
+                     "{\"self\": true, \"refine\": N}",
+                     ref);
+  }
+}
 
 SweepSpec readSpec(const json& j, const std::string& source, EngineRegistry& registry) {
   using mysim::FieldError;
@@ -56,65 +128,9 @@ SweepSpec readSpec(const json& j, const std::string& source, EngineRegistry& reg
     s.scenes.push_back(path);
     s.loaded.emplace(path, std::move(*scene));
   }
-  s.engines = top.has("engines") ? top.textList("engines") : std::vector<std::string>{"mysim"};
-  for (const std::string& e : s.engines) {
-    if (e.find(':') != std::string::npos) {
-      throw FieldError{"engines", "list integrators under \"integrators\", not as " + e};
-    }
-    if (auto ok = registry.check(e); !ok) throw FieldError{"engines", ok.error()};
-    if (registry.find(e)->takes_integrator) s.integrator_engines.push_back(e);
-  }
-  s.integrators.clear();
-  for (const std::string& name :
-       top.has("integrators") ? top.textList("integrators") : std::vector<std::string>{"rk4"}) {
-    auto canonical = mysim::canonicalIntegratorName(name);
-    if (!canonical) throw FieldError{"integrators", canonical.error()};
-    s.integrators.push_back(*canonical);
-  }
-  s.dts = top.positiveList("dt");
-  if (top.has("stiffness_scale")) s.stiffness_scales = top.positiveList("stiffness_scale");
-  if (top.has("tolerance")) s.tolerances = top.positiveList("tolerance");
-  if (top.has("duration")) s.duration = top.positive("duration");
-  s.sample_interval =
-      top.positive("sample_interval", *std::max_element(s.dts.begin(), s.dts.end()));
-  for (std::size_t k = 0; k < s.dts.size(); ++k) {
-    if (!multipleOf(s.sample_interval, s.dts[k])) {
-      throw FieldError{"sample_interval", number(s.sample_interval) +
-                                              " s is not a multiple of dt " + number(s.dts[k]) +
-                                              " s (frames of all runs must line up)"};
-    }
-    // Every scene's run (or the spec's duration) must hold at least one step.
-    for (const auto& [path, scene] : s.loaded) {
-      const double duration = s.duration.value_or(scene.duration);
-      if (s.dts[k] > duration) {
-        throw FieldError{"dt[" + std::to_string(k) + "]",
-                         "a step no longer than the duration (" + number(s.dts[k]) + " s > " +
-                             number(duration) + " s of " + path + ")"};
-      }
-    }
-  }
-  const json& ref = top.raw("reference");
-  if (ref.is_string() && ref.get<std::string>() == "closed_form") {
-    s.reference_closed_form = true;
-  } else if (ref.is_string() && ref.get<std::string>() == "self") {
-    s.reference_self = true;
-  } else if (ref.is_object()) {
-    mysim::FieldReader r = top.object("reference");
-    if (r.has("integrator") && r.has("self")) {
-      throw FieldError{"reference", "either \"integrator\" or \"self\", not both"};
-    }
-    s.reference_self = r.boolean("self", false);
-    auto name = mysim::canonicalIntegratorName(r.text("integrator", "rk4"));
-    if (!name) throw FieldError{"reference.integrator", name.error()};
-    s.reference_integrator = *name;
-    s.reference_refine = static_cast<int>(r.integer("refine", 1, 1'000'000, 16));
-    r.refuseUnknown(kSchema);
-  } else {
-    mysim::failField("reference",
-                     "\"closed_form\", \"self\", {\"integrator\": NAME, \"refine\": N} or "
-                     "{\"self\": true, \"refine\": N}",
-                     ref);
-  }
+  readEngines(top, registry, s);
+  readSteps(top, s);
+  readReference(top, s);
   top.refuseUnknown(kSchema);
   return s;
 }

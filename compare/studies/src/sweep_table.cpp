@@ -9,18 +9,14 @@
 
 #include "compare/io/atomic_file.h"
 #include "compare/io/csv.h"
+#include "compare/io/text_format.h"
 
 namespace springcheck {
 namespace {
 
 // Ten significant digits: what every sweep table has been written with (a value read back and
 // written again is the same text).
-std::string number(double v) {
-  std::ostringstream out;
-  out.precision(10);
-  out << v;
-  return out.str();
-}
+std::string number(double v) { return formatNumber(v, 10); }
 
 template <typename T>
 bool parseNumber(const std::string& text, T& value) {

@@ -19,5 +19,7 @@ void writeJunit(std::ostream& out, const GateReport& report, const std::string& 
 
 // "| | scene | metric | engines | measured | bound |" rows, failures first, and a one-line total.
 void writeGateMarkdown(std::ostream& out, const GateReport& report, const std::string& tolerances);
+// {"tolerances": FILE, "checks": [{scene, engines, metric, bound, why, passed, problem, measured}]}
+void writeGateJson(std::ostream& out, const GateReport& report, const std::string& tolerances);
 
 }  // namespace springcheck

@@ -46,6 +46,23 @@ TEST(BoxCollider, ContactLeavesThroughTheNearestFaceOrAlongTheLineFromTheNearest
   EXPECT_FALSE(contactPoint(box, Vec3(1.2, 0, 0)));
 }
 
+// A box standing on the ground (its bottom face on the plane): a node just inside near the
+// bottom leaves through the nearest face that does not lead into the ground, here its side,
+// and ends outside both. The point is one a cloth run met: its clamped nearest point differs from
+// it by round-off, which must not read as "outside".
+TEST(Colliders, ABoxOnTheGroundNeverPushesANodeOutThroughItsBottom) {
+  const std::vector<Collider> ground_and_box = {Box{Vec3(0, 0.15, 0), Vec3(0.2, 0.15, 0.2), 1e-3},
+                                                Plane{Vec3::Zero(), Vec3::UnitY(), 1e-3}};
+  Vector x = (Vector(3) << -0.04748955, 0.00218487, 0.1918533).finished();
+  Vector v = (Vector(3) << -0.05, 0.0, -0.3).finished();
+  resolveContacts(ground_and_box, {0}, x, v);
+  EXPECT_NEAR(x[2], 0.201, 1e-15);  // out through the +z side to the margin
+  EXPECT_DOUBLE_EQ(x[1], 0.00218487);
+  EXPECT_GE(signedDistance(ground_and_box[0], Vec3(x)), 1e-3 - 1e-15);
+  EXPECT_GT(signedDistance(ground_and_box[1], Vec3(x)), 0.0);
+  EXPECT_EQ(v[2], 0.0);  // its inward (-z) velocity removed
+}
+
 // Outside each shape (but within its margin), the contact normal is the gradient of the signed
 // distance, and the contact point lies on the grown surface: distance = margin.
 TEST(Colliders, ContactNormalIsTheSignedDistanceGradientAndThePointLiesAtTheMargin) {

@@ -1,6 +1,8 @@
 #include "mysim/box_collider.h"
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
+#include <vector>
 
 #include "mysim/json_input.h"
 
@@ -30,22 +32,44 @@ double signedDistance(const Box& box, const Vec3& x) {
 }
 
 std::optional<SurfacePoint> contactPoint(const Box& box, const Vec3& x) {
+  return contactPoint(box, x, [](const Vec3&) { return false; });
+}
+
+std::optional<SurfacePoint> contactPoint(const Box& box, const Vec3& x, const Blocked& blocked) {
   const Vec3 local = x - box.center;
   const Vec3 q = local.cwiseAbs() - box.half_extents;  // > 0: outside along that axis
-  // The axis of the face nearest to a point inside or on the surface: where q is largest.
-  int axis = 0;
-  q.maxCoeff(&axis);
-  const Vec3 nearest = box.center + local.cwiseMax(-box.half_extents).cwiseMin(box.half_extents);
-  const Vec3 out = x - nearest;
-  const double d = out.norm();  // 0 inside or on the surface
-  if (d >= box.margin && q.maxCoeff() >= 0.0) return std::nullopt;
-  if (d > 0.0) return SurfacePoint{nearest + box.margin * (out / d), out / d};
-  // Inside or on a face: out through the face of least depth, to margin beyond it.
-  Vec3 n = Vec3::Zero();
-  n[axis] = local[axis] < 0.0 ? -1.0 : 1.0;
-  Vec3 p = x;
-  p[axis] = box.center[axis] + n[axis] * (box.half_extents[axis] + box.margin);
-  return SurfacePoint{p, n};
+  if (q.maxCoeff() > 0.0) {
+    // Outside: along the line from the nearest box point, if within the margin. (Inside, the
+    // clamped point differs from x by round-off only: its direction would be noise.)
+    const Vec3 nearest = box.center + local.cwiseMax(-box.half_extents).cwiseMin(box.half_extents);
+    const Vec3 out = x - nearest;
+    const double d = out.norm();
+    if (d >= box.margin) return std::nullopt;
+    return SurfacePoint{nearest + box.margin * (out / d), out / d};
+  }
+  // Inside or on a face: out through a face to margin beyond it, the nearest face first (on each
+  // axis the side the particle is on first; the earlier axis on a tie).
+  struct Exit {
+    double distance;
+    SurfacePoint surface;
+  };
+  std::vector<Exit> exits;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double near_side = local[axis] < 0.0 ? -1.0 : 1.0;
+    for (double side : {near_side, -near_side}) {
+      Vec3 n = Vec3::Zero();
+      n[axis] = side;
+      Vec3 p = x;
+      p[axis] = box.center[axis] + side * (box.half_extents[axis] + box.margin);
+      exits.push_back({box.half_extents[axis] - side * local[axis], {p, n}});
+    }
+  }
+  std::stable_sort(exits.begin(), exits.end(),
+                   [](const Exit& a, const Exit& b) { return a.distance < b.distance; });
+  for (const Exit& e : exits) {
+    if (!blocked(e.surface.point)) return e.surface;
+  }
+  return exits.front().surface;
 }
 
 }  // namespace mysim

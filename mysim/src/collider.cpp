@@ -22,7 +22,8 @@ void forEachShape(F f) {
 
 std::string colliderTypes() {
   std::string types;
-  forEachShape([&](auto shape) { types += (types.empty() ? "" : ", ") + std::string(shape.kType); });
+  forEachShape(
+      [&](auto shape) { types += (types.empty() ? "" : ", ") + std::string(shape.kType); });
   return types;
 }
 
@@ -46,8 +47,14 @@ int resolveContacts(const std::vector<Collider>& colliders, const std::vector<ch
   int contacts = 0;
   for (int p = 0; p < static_cast<int>(pinned.size()); ++p) {
     if (pinned[p]) continue;
-    for (const Collider& c : colliders) {
-      if (const auto s = contactPoint(c, x.segment<3>(3 * p))) {
+    for (std::size_t k = 0; k < colliders.size(); ++k) {
+      const Blocked inside_another = [&](const Vec3& point) {
+        for (std::size_t o = 0; o < colliders.size(); ++o) {
+          if (o != k && signedDistance(colliders[o], point) < 0.0) return true;
+        }
+        return false;
+      };
+      if (const auto s = contactPoint(colliders[k], x.segment<3>(3 * p), inside_another)) {
         applyContact(*s, x.segment<3>(3 * p), v.segment<3>(3 * p));
         ++contacts;
       }

@@ -267,6 +267,17 @@ void readIntegrator(FieldReader& top, Scene& scene) {
     if (!preconditioner) throw FieldError{"integrator.cg_preconditioner", preconditioner.error()};
     is.preconditioner = *preconditioner;
   }
+  // Every integrator's own numeric parameters (the catalogue declares them), defaults filled in.
+  for (const IntegratorInfo& info : integratorCatalog()) {
+    for (const IntegratorParameter& p : info.parameters) {
+      if (!p.in_values || is.values.count(p.name)) continue;
+      is.values[p.name] = !integ.has(p.name) ? std::stod(p.fallback)
+                          : p.integer
+                              ? static_cast<double>(integ.integer(p.name, static_cast<long>(p.low),
+                                                                  static_cast<long>(p.high)))
+                              : integ.inRange(p.name, p.low, p.high);
+    }
+  }
   integ.refuseUnknown("docs/scenes.md");
 }
 

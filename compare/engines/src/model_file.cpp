@@ -97,6 +97,12 @@ std::expected<void, std::string> writeModelFile(const std::string& dir, const my
                        {"frequency", model.pin_motion->frequency}};
   }
   for (const mysim::Collider& c : model.colliders) j["colliders"].push_back(describeCollider(c));
+  // Every integrator parameter of the catalogue, as the run has it (substeps, iterations, ...).
+  for (const mysim::IntegratorInfo& info : mysim::integratorCatalog()) {
+    for (const mysim::IntegratorParameter& p : info.parameters) {
+      if (p.in_values) j["integrator"][p.name] = config.integrator.value(p.name);
+    }
+  }
   // Engines written for a model with at most one sphere read "sphere": kept for them, filled
   // only when the sphere is the one collider (so such an engine never silently drops another).
   if (model.colliders.size() == 1 && std::holds_alternative<mysim::Sphere>(model.colliders[0])) {

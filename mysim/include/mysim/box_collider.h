@@ -1,7 +1,6 @@
 #pragma once
-#include <optional>
-
 #include <nlohmann/json_fwd.hpp>
+#include <optional>
 
 #include "mysim/contact.h"
 
@@ -15,9 +14,9 @@ class FieldReader;
 // grown surface has rounded edges and corners, as Bullet's margins do).
 struct Box {
   static constexpr const char* kType = "box";
-  Vec3 center = Vec3::Zero();            // m
+  Vec3 center = Vec3::Zero();             // m
   Vec3 half_extents = Vec3::Constant(1);  // m, each > 0
-  double margin = 0.0;                   // m
+  double margin = 0.0;                    // m
 
   static Box read(FieldReader& r);  // center, half_extents, margin (default 1e-3 smallest half)
   nlohmann::json describe() const;
@@ -27,5 +26,8 @@ struct Box {
 // face).
 double signedDistance(const Box& box, const Vec3& x);
 std::optional<SurfacePoint> contactPoint(const Box& box, const Vec3& x);
+// The same, a particle inside leaving through the nearest face whose exit is not `blocked` (the
+// nearest of all if every one is).
+std::optional<SurfacePoint> contactPoint(const Box& box, const Vec3& x, const Blocked& blocked);
 
 }  // namespace mysim

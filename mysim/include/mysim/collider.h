@@ -4,11 +4,10 @@
 // surface grown by its margin, and reading from / describing to JSON. Adding a shape: its file,
 // one name in the variant below, its Bullet twin (reference/src/static_collider.cpp) and its
 // drawing (viewer/src/collider_drawing.cpp); everything else goes through this header.
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <variant>
 #include <vector>
-
-#include <nlohmann/json_fwd.hpp>
 
 #include "mysim/box_collider.h"
 #include "mysim/plane_collider.h"
@@ -30,6 +29,12 @@ inline double signedDistance(const Collider& c, const Vec3& x) {
 inline std::optional<SurfacePoint> contactPoint(const Collider& c, const Vec3& x) {
   return std::visit([&](const auto& shape) { return contactPoint(shape, x); }, c);
 }
+// With a test for exits that lead into another collider (only a box has a choice of exits).
+inline std::optional<SurfacePoint> contactPoint(const Collider& c, const Vec3& x,
+                                                const Blocked& blocked) {
+  if (const Box* box = std::get_if<Box>(&c)) return contactPoint(*box, x, blocked);
+  return contactPoint(c, x);
+}
 
 // "sphere, plane, box": the types a scene may name.
 std::string colliderTypes();
@@ -38,7 +43,8 @@ Collider readCollider(FieldReader& r);
 nlohmann::json describeCollider(const Collider& c);
 
 // After a step: every free particle touching a collider goes onto its surface (applyContact),
-// colliders in the model's order. Returns how many contacts were applied.
+// colliders in the model's order, each avoiding exits into the others (a box's bottom face on
+// the ground). Returns how many contacts were applied.
 int resolveContacts(const std::vector<Collider>& colliders, const std::vector<char>& pinned,
                     Eigen::Ref<Vector> x, Eigen::Ref<Vector> v);
 

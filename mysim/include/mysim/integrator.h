@@ -1,6 +1,7 @@
 #pragma once
 #include <expected>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -44,6 +45,11 @@ struct IntegratorSettings {
   double cg_tolerance = 1e-8;    // backward Euler: CG relative residual
   int cg_max_iterations = 1000;  // backward Euler
   CgPreconditioner preconditioner = CgPreconditioner::Auto;  // backward Euler
+  // The catalogue's numeric parameters without a field above, by name (every integrator's,
+  // defaults filled in by the scene reader: a scene may carry several methods' settings).
+  std::map<std::string, double> values;
+  // A parameter of `values`, or its catalogue default when none was read.
+  double value(const std::string& name) const;
 };
 
 // Advances a state by h. Owns its scratch buffers (allocated on first use, reused after), so one
@@ -59,10 +65,15 @@ struct IntegratorParameter {
   std::string name;      // the scene field, integrator.NAME
   std::string fallback;  // its default, as a scene would write it
   std::string meaning;
+  // Read into IntegratorSettings::values by the scene reader, as a number in [low, high]
+  // (integer when asked); off for the settings with fields of their own.
+  bool in_values = false;
+  double low = 0.0, high = 0.0;
+  bool integer = false;
 };
 
 // How an integrator's method is classed, for tables and the report's styles.
-enum class IntegratorFamily { Explicit, Symplectic, Implicit, Adaptive };
+enum class IntegratorFamily { Explicit, Symplectic, Implicit, Adaptive, PositionBased };
 const char* familyName(IntegratorFamily family);
 
 // One row per integrator: everything any study, table, benchmark or test asks of a method, so

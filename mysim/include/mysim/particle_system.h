@@ -53,6 +53,9 @@ class ParticleSystem final : public OdeSystem {
   void acceleration(double t, Eigen::Ref<const Vector> x, Eigen::Ref<const Vector> v,
                     Eigen::Ref<Vector> a) const;
   const SpringAdjacency& adjacency() const { return adjacency_; }
+  // Gravity, drag and wind on particle p at time t (v: the 3N velocities): every force but the
+  // springs', what both force loops start each sum from.
+  Vec3 externalForce(int p, double t, const double* v) const;
 
   // Position, velocity and acceleration a pinned particle must have at time t.
   Vec3 pinPosition(int particle, double t) const;
@@ -71,10 +74,8 @@ class ParticleSystem final : public OdeSystem {
 
   Model model_;
   BlowUpLimits limits_;
-  double energy_scale_ = 0.0;  // J, see the constructor
-  SpringAdjacency adjacency_;  // derived from model_.springs once
-  // Gravity, drag and wind on particle p: what both force loops start each sum from.
-  Vec3 externalForce(int p, double t, const double* v) const;
+  double energy_scale_ = 0.0;    // J, see the constructor
+  SpringAdjacency adjacency_;    // derived from model_.springs once
   bool damped_springs_ = false;  // any spring damping: the per-spring pass reads velocities
   mutable Vector spring_scale_;  // (S) each spring's force scale: scratch of gather()
   void gatherPerEnd(double t, Eigen::Ref<const Vector> x, Eigen::Ref<const Vector> v,

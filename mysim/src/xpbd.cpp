@@ -1,0 +1,126 @@
+#include <cmath>
+#include <vector>
+
+#include "mysim/graph_coloring.h"
+#include "mysim/integrator.h"
+#include "mysim/particle_system.h"
+
+namespace mysim {
+namespace {
+
+// Extended position-based dynamics: Macklin, Mueller, Chentanez, "XPBD: position-based
+// simulation of compliant constrained dynamics" (MIG 2016), with the step split into substeps
+// as in Macklin et al., "Small steps in physics simulation" (SCA 2019). Each spring is a distance
+// constraint C = |x_i - x_j| - rest with compliance alpha = 1/k; its damping c enters as XPBD's
+// constraint damping beta = c. A substep of h_s = h / substeps:
+//   v += h_s f_ext / m (gravity, drag, wind),  x_prev = x,  x += h_s v,  pins to x_pin(t + h_s),
+//   lambda = 0, then `iterations` Gauss-Seidel passes over the springs, colour by colour:
+//     alpha~ = alpha / h_s^2,  gamma = alpha~ beta h_s = c / (k h_s),
+//     dlambda = (-C - alpha~ lambda - gamma grad C . (x - x_prev)) / ((1 + gamma)(w_i + w_j) +
+//     alpha~) x_i += w_i dlambda n,  x_j -= w_j dlambda n,  lambda += dlambda   (eq. 18 and 26)
+//   v = (x - x_prev) / h_s, then the colliders' contacts (afterStep).
+// What it converges to: with iterations enough that lambda solves each substep's system, a
+// substep is an implicit (backward) Euler step of the compliant dynamics (Macklin 2016, sec. 4),
+// so as substeps grow the trajectory converges to the ODE's, at first order in h_s. With one
+// iteration per substep the residual of that solve also shrinks with h_s (Macklin 2019).
+// Springs of one colour share no particle, so a colour runs in parallel with the same bits at
+// any thread count.
+class Xpbd final : public Integrator {
+ public:
+  Xpbd(int substeps, int iterations) : substeps_(substeps), iterations_(iterations) {}
+
+  StepCounts step(OdeSystem& system, State& s, double h) override {
+    ParticleSystem& ps = *system.particles();
+    const Model& model = ps.model();
+    const int n = ps.particleCount();
+    if (inverse_mass_.size() != n) prepare(model);
+    const double hs = h / substeps_;
+    for (int sub = 0; sub < substeps_; ++sub) {
+      predict(ps, s, hs);
+      lambda_.setZero();
+      for (int it = 0; it < iterations_; ++it) projectSprings(model, s, hs);
+      s.y.tail(3 * n) = (s.y.head(3 * n) - x_prev_) / hs;
+      // Pins on their path with its velocity, then the contacts: after every substep.
+      system.afterStep(s);
+    }
+    return {.accepted = 1,
+            .derivative_evaluations = substeps_,
+            .linear_iterations = static_cast<long>(substeps_) * iterations_};
+  }
+
+ private:
+  void prepare(const Model& model) {
+    colors_ = colorSprings(model.particleCount(), model.springs);
+    lambda_ = Vector::Zero(static_cast<Eigen::Index>(model.springs.size()));
+    inverse_mass_.resize(model.particleCount());
+    for (int p = 0; p < model.particleCount(); ++p) {
+      inverse_mass_[p] = model.pinned[p] ? 0.0 : 1.0 / model.mass[p];
+    }
+  }
+
+  // Unconstrained motion under the other forces, the pins on their path at the substep's end.
+  void predict(const ParticleSystem& ps, State& s, double hs) {
+    const Model& model = ps.model();
+    const int n = ps.particleCount();
+    x_prev_ = s.y.head(3 * n);
+    const double* v = s.y.data() + 3 * n;
+    for (int p = 0; p < n; ++p) {
+      if (model.pinned[p]) continue;
+      s.y.segment<3>(3 * n + 3 * p) += hs * inverse_mass_[p] * ps.externalForce(p, s.t, v);
+    }
+    s.t += hs;
+    for (int p = 0; p < n; ++p) {
+      s.y.segment<3>(3 * p) =
+          model.pinned[p] ? ps.pinPosition(p, s.t)
+                          : Vec3(s.y.segment<3>(3 * p) + hs * s.y.segment<3>(3 * n + 3 * p));
+    }
+  }
+
+  // One Gauss-Seidel pass, colour by colour (a colour in parallel: its springs share no end).
+  void projectSprings(const Model& model, State& s, double hs) {
+    double* x = s.y.data();
+    const double* xp = x_prev_.data();
+    for (const std::vector<int>& color : colors_) {
+      const int count = static_cast<int>(color.size());
+#pragma omp parallel for schedule(static) if (count >= kParallelSprings)
+      for (int c = 0; c < count; ++c) {
+        const int k = color[c];
+        const Spring& sp = model.springs[k];
+        const double wi = inverse_mass_[sp.i], wj = inverse_mass_[sp.j];
+        if (wi + wj == 0.0) continue;
+        Eigen::Map<Vec3> xi(x + 3 * sp.i), xj(x + 3 * sp.j);
+        const Vec3 d = xi - xj;
+        const double length = d.norm();
+        if (length == 0.0) continue;  // no direction to push along
+        const Vec3 unit = d / length;
+        const double alpha = 1.0 / (sp.stiffness * hs * hs);
+        const double gamma = sp.damping / (sp.stiffness * hs);
+        const Vec3 moved = (xi - Eigen::Map<const Vec3>(xp + 3 * sp.i)) -
+                           (xj - Eigen::Map<const Vec3>(xp + 3 * sp.j));
+        const double dlambda =
+            (-(length - sp.rest_length) - alpha * lambda_[k] - gamma * unit.dot(moved)) /
+            ((1.0 + gamma) * (wi + wj) + alpha);
+        xi += wi * dlambda * unit;
+        xj -= wj * dlambda * unit;
+        lambda_[k] += dlambda;
+      }
+    }
+  }
+
+  // Below this many springs in a colour, threads cost more than they save.
+  static constexpr int kParallelSprings = 2048;
+  int substeps_, iterations_;
+  std::vector<std::vector<int>> colors_;
+  Vector lambda_;        // (S) accumulated multiplier of each spring, this substep
+  Vector inverse_mass_;  // (N) 0 for pinned particles
+  Vector x_prev_;        // (3N) positions at the substep's start
+};
+
+}  // namespace
+
+std::unique_ptr<Integrator> makeXpbd(const IntegratorSettings& s) {
+  return std::make_unique<Xpbd>(static_cast<int>(s.value("substeps")),
+                                static_cast<int>(s.value("iterations")));
+}
+
+}  // namespace mysim

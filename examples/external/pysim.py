@@ -24,10 +24,22 @@ import time
 import numpy as np
 
 
-def contact(collider, x):
+def signed_distance(collider, x):
+    """Distance of each point to a collider's surface, negative inside."""
+    if collider["type"] == "sphere":
+        d = x - np.array(collider["center"], dtype=float)
+        return np.sqrt(np.einsum("ij,ij->i", d, d)) - collider["radius"]
+    if collider["type"] == "plane":
+        return (x - np.array(collider["point"], dtype=float)) @ np.array(collider["normal"], dtype=float)
+    q = np.abs(x - np.array(collider["center"], dtype=float)) - np.array(collider["half_extents"], dtype=float)
+    return np.linalg.norm(np.maximum(q, 0.0), axis=1) + np.minimum(q.max(axis=1), 0.0)
+
+
+def contact(collider, x, others):
     """Which particles touch a collider (closer than its margin, or inside), the point of its
     surface grown by the margin each must go to, and the outward normal there
-    (docs/external-engines.md, "Colliders")."""
+    (docs/external-engines.md, "Colliders"). `others`: the model's other colliders, whose
+    inside a box's exit must avoid."""
     margin = collider["margin"]
     if collider["type"] == "sphere":
         centre = np.array(collider["center"], dtype=float)
@@ -41,27 +53,43 @@ def contact(collider, x):
         distance = (x - np.array(collider["point"], dtype=float)) @ normal
         return distance < margin, x + (margin - distance)[:, None] * normal, np.tile(normal, (len(x), 1))
     if collider["type"] == "box":
-        centre = np.array(collider["center"], dtype=float)
-        half = np.array(collider["half_extents"], dtype=float)
-        local = x - centre
-        q = np.abs(local) - half
-        axis = np.argmax(q, axis=1)
-        nearest = centre + np.clip(local, -half, half)
-        out = x - nearest
-        d = np.sqrt(np.einsum("ij,ij->i", out, out))
-        inside = q.max(axis=1) < 0
-        touching = (d < margin) | inside
-        # Outside: along the line from the nearest box point. Inside or on the surface: out
-        # through the face of least depth.
-        face = np.zeros_like(x)
-        rows = np.arange(len(x))
-        face[rows, axis] = np.where(local[rows, axis] < 0, -1.0, 1.0)
-        normal = np.where(d[:, None] > 0, out / np.maximum(d[:, None], 1e-300), face)
-        through_face = x.copy()
-        through_face[rows, axis] = centre[axis] + face[rows, axis] * (half[axis] + margin)
-        point = np.where(d[:, None] > 0, nearest + margin * normal, through_face)
-        return touching, point, normal
+        return box_contact(collider, x, others)
     sys.exit(f"pysim: collider type {collider['type']!r} not handled")
+
+
+def box_contact(box, x, others):
+    centre = np.array(box["center"], dtype=float)
+    half = np.array(box["half_extents"], dtype=float)
+    margin = box["margin"]
+    local = x - centre
+    q = np.abs(local) - half
+    inside = q.max(axis=1) <= 0
+    # Outside: along the line from the nearest box point, within the margin.
+    nearest = centre + np.clip(local, -half, half)
+    out = x - nearest
+    d = np.sqrt(np.einsum("ij,ij->i", out, out))
+    touching = inside | (d < margin)
+    normal = out / np.maximum(d, 1e-300)[:, None]
+    point = nearest + margin * normal
+    # Inside: out through a face to margin beyond it, the nearest face first (on each axis the
+    # side the particle is on first, the earlier axis on a tie), skipping exits inside another
+    # collider.
+    rows = np.nonzero(inside)[0]
+    for p in rows:
+        exits = []
+        for axis in range(3):
+            near = -1.0 if local[p, axis] < 0 else 1.0
+            for side in (near, -near):
+                e = x[p].copy()
+                e[axis] = centre[axis] + side * (half[axis] + margin)
+                n = np.zeros(3)
+                n[axis] = side
+                exits.append((half[axis] - side * local[p, axis], e, n))
+        exits.sort(key=lambda item: item[0])  # stable: ties keep the order above
+        chosen = next((ex for ex in exits
+                       if not any(signed_distance(o, ex[1][None, :])[0] < 0 for o in others)), exits[0])
+        point[p], normal[p] = chosen[1], chosen[2]
+    return touching, point, normal
 
 
 def main(model_path, out_dir):
@@ -141,8 +169,8 @@ def main(model_path, out_dir):
         offset, velocity = pin_offset(t) if pins is not None else (0.0, 0.0)
         x[pinned] = start[pinned] + offset
         v[pinned] = velocity
-        for collider in colliders:  # in the model's order, as springcheck's engines
-            touching, point, normal = contact(collider, x)
+        for index, collider in enumerate(colliders):  # in the model's order, as springcheck's engines
+            touching, point, normal = contact(collider, x, colliders[:index] + colliders[index + 1:])
             touching &= free
             if np.any(touching):
                 x[touching] = point[touching]

@@ -24,4 +24,23 @@ std::vector<std::vector<int>> colorSprings(int particles, const SpringList& spri
   return colors;
 }
 
+std::vector<std::vector<int>> colorParticles(const SpringAdjacency& adjacency) {
+  const int particles = static_cast<int>(adjacency.offsets.size()) - 1;
+  std::vector<int> color_of(particles, -1);
+  std::vector<std::vector<int>> colors;
+  std::vector<char> taken;
+  for (int p = 0; p < particles; ++p) {
+    taken.assign(colors.size() + 1, 0);
+    for (int e = adjacency.offsets[p]; e < adjacency.offsets[p + 1]; ++e) {
+      const int c = color_of[adjacency.other[e]];
+      if (c >= 0) taken[c] = 1;
+    }
+    const int color = static_cast<int>(std::find(taken.begin(), taken.end(), 0) - taken.begin());
+    if (color == static_cast<int>(colors.size())) colors.emplace_back();
+    colors[color].push_back(p);
+    color_of[p] = color;
+  }
+  return colors;
+}
+
 }  // namespace mysim

@@ -12,6 +12,7 @@ StepCounts& StepCounts::operator+=(const StepCounts& o) {
   linear_iterations += o.linear_iterations;
   solver_failures += o.solver_failures;
   gave_up = gave_up || o.gave_up;
+  setup_seconds += o.setup_seconds;
   return *this;
 }
 
@@ -26,6 +27,8 @@ std::unique_ptr<Integrator> makeBackwardEuler(
     CgPreconditioner preconditioner = CgPreconditioner::Auto);
 std::unique_ptr<Integrator> makeDormandPrince(double abs_tolerance, double rel_tolerance);
 std::unique_ptr<Integrator> makeXpbd(const IntegratorSettings& settings);
+std::unique_ptr<Integrator> makeLocalGlobal(const IntegratorSettings& settings);
+std::unique_ptr<Integrator> makeVertexBlockDescent(const IntegratorSettings& settings);
 
 namespace {
 
@@ -51,6 +54,16 @@ const std::vector<IntegratorParameter> kXpbdParameters = {
      "iterations)",
      true, 1, 10000, true},
     {"iterations", "10", "Gauss-Seidel passes over the springs per substep", true, 1, 10000, true}};
+// Ten passes for the two implicit-Euler solvers too (the benchmark setting; the same
+// default as XPBD's, which shares the parameter's name).
+const std::vector<IntegratorParameter> kLocalGlobalParameters = {
+    {"iterations", "10", "local/global passes per step (each: one solve with the factor)", true, 1,
+     10000, true}};
+const std::vector<IntegratorParameter> kVbdParameters = {
+    {"iterations", "10", "passes over the vertices per step", true, 1, 10000, true},
+    {"acceleration_rho", "0",
+     "Chebyshev acceleration's spectral radius estimate, in [0, 1); 0 turns it off", true, 0.0,
+     0.999, false}};
 const std::vector<IntegratorParameter> kAdaptiveParameters = {
     {"abs_tolerance", "1e-6", "per-component absolute error bound per step"},
     {"rel_tolerance", "1e-6", "relative error bound per step"}};
@@ -117,6 +130,15 @@ const std::vector<IntegratorInfo>& integratorCatalog() {
       {"xpbd", "", "extended position-based dynamics: springs as compliant distance constraints",
        true, [](S s) { return makeXpbd(s); }, 1, F::PositionBased, [](double) { return Limit(); },
        kXpbdParameters},
+      // Both solve the implicit-Euler step, unconditionally stable once converged; with a fixed
+      // number of passes theory gives no limit (the stability maps measure it).
+      {"local-global", "",
+       "Liu et al. 2013 fast mass-spring: implicit Euler by local/global passes, one factorisation",
+       true, [](S s) { return makeLocalGlobal(s); }, 1, F::LocalGlobal,
+       [](double) { return Limit(); }, kLocalGlobalParameters},
+      {"vbd", "", "vertex block descent (Chen et al. 2024): implicit Euler by per-vertex Newton",
+       true, [](S s) { return makeVertexBlockDescent(s); }, 1, F::BlockDescent,
+       [](double) { return Limit(); }, kVbdParameters},
   };
   return catalog;
 }
@@ -151,6 +173,10 @@ const char* familyName(IntegratorFamily family) {
       return "adaptive";
     case IntegratorFamily::PositionBased:
       return "position-based";
+    case IntegratorFamily::LocalGlobal:
+      return "local-global";
+    case IntegratorFamily::BlockDescent:
+      return "block-descent";
   }
   return "?";
 }

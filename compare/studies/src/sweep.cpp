@@ -101,6 +101,7 @@ EngineMetrics recordRun(SweepRow& row, const mysim::Model& model, const mysim::R
   row.accepted_steps = r.counts.accepted;
   row.rejected_steps = r.counts.rejected;
   row.linear_iterations = r.counts.linear_iterations;
+  row.setup_seconds = r.counts.setup_seconds;
   EngineMetrics metrics = engineMetrics(model, {row.c.engine, r});
   if (!r.energies.empty()) {
     row.energy_drift_max = metricValue(metrics, "energy_drift_max");

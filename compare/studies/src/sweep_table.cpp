@@ -92,6 +92,7 @@ const std::vector<Column>& columns() {
       optional("accepted_steps", &R::accepted_steps),
       optional("rejected_steps", &R::rejected_steps),
       optional("linear_iterations", &R::linear_iterations),
+      optional("setup_seconds", &R::setup_seconds),
       text("reference", &R::reference),
       optional("error", &R::error),
       optional("final_error", &R::final_error),

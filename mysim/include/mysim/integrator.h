@@ -17,11 +17,16 @@ struct StepCounts {
   long accepted = 0;  // accepted (sub)steps
   long rejected = 0;  // rejected trial steps (adaptive only)
   long derivative_evaluations = 0;
-  long linear_iterations = 0;  // CG iterations (backward Euler only)
+  // Backward Euler: CG iterations; XPBD: constraint passes; local/global: global solves;
+  // vertex block descent: passes over the vertices.
+  long linear_iterations = 0;
   long solver_failures = 0;    // linear solves that did not reach their tolerance
   // An adaptive method could not meet its tolerance within its limits (minimum step, maximum
   // internal steps): the step stopped short and the run must stop there.
   bool gave_up = false;
+  // Wall time of one-time set-up inside the steps (local/global's factorisation, once per scene
+  // and step size), s: reported apart, so a step's cost is not mistaken for it.
+  double setup_seconds = 0.0;
 
   StepCounts& operator+=(const StepCounts& o);
 };
@@ -73,7 +78,15 @@ struct IntegratorParameter {
 };
 
 // How an integrator's method is classed, for tables and the report's styles.
-enum class IntegratorFamily { Explicit, Symplectic, Implicit, Adaptive, PositionBased };
+enum class IntegratorFamily {
+  Explicit,
+  Symplectic,
+  Implicit,       // Newton-Krylov implicit Euler
+  Adaptive,
+  PositionBased,  // constraint projection (XPBD)
+  LocalGlobal,    // implicit Euler by alternating projections and one constant factorisation
+  BlockDescent,   // implicit Euler by per-vertex Newton steps (vertex block descent)
+};
 const char* familyName(IntegratorFamily family);
 
 // One row per integrator: everything any study, table, benchmark or test asks of a method, so

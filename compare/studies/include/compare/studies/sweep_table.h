@@ -33,6 +33,7 @@ struct SweepRow {
   std::optional<double> load_average;                       // the machine's, 1 minute
   std::optional<long> steps, derivative_evaluations, accepted_steps, rejected_steps;
   std::optional<long> linear_iterations;
+  std::optional<double> setup_seconds;  // one-time set-up inside the steps (a factorisation)
   std::string reference;                     // what `error` is measured against
   std::optional<double> error, final_error;  // m (or relative, for a closed form's quantity)
   std::optional<double> energy_drift_max, energy_rise, max_strain;

@@ -1,0 +1,39 @@
+#pragma once
+// The nonlinear problem one implicit (backward) Euler step poses, the one every implicit solver
+// family of the catalogue (local/global, vertex block descent) iterates on, so they converge to
+// the same minimiser. With v1 = (x1 - x0) / h and every force taken at the step's end (t + h),
+//   M (v1 - v0) = h f(t + h, x1, v1)
+// over the free particles (pinned ones are on their path at t + h). Drag (-d v) is linear in v1,
+// so it folds into an effective mass and target, exactly:
+//   m~ = m + h d,   y~ = (m (x0 + h v0) + h d x0 + h^2 (m g + wind(t + h))) / m~,
+// and the step's equations are the zero of
+//   r(x) = m~ / h^2 (x - y~) + grad E_springs(x) + sum_s (c_s / h) u_s u_s^T (dx_i - dx_j)
+// (dx = x - x0; u_s the spring's direction at x; the last term is spring damping at v1). Without
+// spring damping r is the gradient of 1/(2 h^2) |x - y~|^2_M~ + E(x) (Liu et al. 2013, eq. 6).
+#include "mysim/particle_system.h"
+#include "mysim/state.h"
+
+namespace mysim {
+
+struct ImplicitEulerStep {
+  double h = 0.0;
+  double t_end = 0.0;
+  Vector x0;              // (3N) positions at the step's start
+  Vector target;          // (3N) y~ for free particles, the pin's position at t + h for pinned
+  Vector mass_over_h2;    // (N) m~ / h^2
+};
+
+// The step from state s by h, for system ps.
+void prepareImplicitEulerStep(const ParticleSystem& ps, const State& s, double h,
+                              ImplicitEulerStep& step);
+
+// r(x) above (3N, pinned rows zero).
+void implicitEulerResidual(const ParticleSystem& ps, const ImplicitEulerStep& step,
+                           const Vector& x, Vector& r);
+
+// Ends the step at positions x: v = (x - x0) / h, t += h, then the system's after-step (pins on
+// their path with their velocity, contacts).
+void finishImplicitEulerStep(OdeSystem& system, const ImplicitEulerStep& step, const Vector& x,
+                             State& s);
+
+}  // namespace mysim

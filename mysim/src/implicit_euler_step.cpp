@@ -1,0 +1,60 @@
+#include "mysim/implicit_euler_step.h"
+
+namespace mysim {
+
+void prepareImplicitEulerStep(const ParticleSystem& ps, const State& s, double h,
+                              ImplicitEulerStep& step) {
+  const Model& model = ps.model();
+  const int n = ps.particleCount();
+  step.h = h;
+  step.t_end = s.t + h;
+  step.x0 = s.y.head(3 * n);
+  step.target.resize(3 * n);
+  step.mass_over_h2.resize(n);
+  const Vector zero_velocity = Vector::Zero(3 * n);  // external force without its drag term
+  for (int p = 0; p < n; ++p) {
+    const double m = model.mass[p], m_eff = m + h * model.drag;
+    step.mass_over_h2[p] = m_eff / (h * h);
+    if (model.pinned[p]) {
+      step.target.segment<3>(3 * p) = ps.pinPosition(p, step.t_end);
+      continue;
+    }
+    const Vec3 x0 = s.y.segment<3>(3 * p), v0 = s.y.segment<3>(3 * n + 3 * p);
+    const Vec3 f_end = ps.externalForce(p, step.t_end, zero_velocity.data());
+    step.target.segment<3>(3 * p) = (m * (x0 + h * v0) + h * model.drag * x0 + h * h * f_end) / m_eff;
+  }
+}
+
+void implicitEulerResidual(const ParticleSystem& ps, const ImplicitEulerStep& step,
+                           const Vector& x, Vector& r) {
+  const Model& model = ps.model();
+  const int n = ps.particleCount();
+  r.resize(3 * n);
+  for (int p = 0; p < n; ++p) {
+    r.segment<3>(3 * p) =
+        step.mass_over_h2[p] * (x.segment<3>(3 * p) - step.target.segment<3>(3 * p));
+  }
+  for (const Spring& sp : model.springs) {
+    const Vec3 d = x.segment<3>(3 * sp.i) - x.segment<3>(3 * sp.j);
+    const double l = d.norm();
+    const Vec3 u = d / l;
+    const Vec3 moved = d - (step.x0.segment<3>(3 * sp.i) - step.x0.segment<3>(3 * sp.j));
+    const Vec3 g = sp.stiffness * (l - sp.rest_length) * u + (sp.damping / step.h) * u.dot(moved) * u;
+    r.segment<3>(3 * sp.i) += g;
+    r.segment<3>(3 * sp.j) -= g;
+  }
+  for (int p = 0; p < n; ++p) {
+    if (model.pinned[p]) r.segment<3>(3 * p).setZero();
+  }
+}
+
+void finishImplicitEulerStep(OdeSystem& system, const ImplicitEulerStep& step, const Vector& x,
+                             State& s) {
+  const Eigen::Index n3 = step.x0.size();
+  s.y.tail(n3) = (x - step.x0) / step.h;
+  s.y.head(n3) = x;
+  s.t = step.t_end;
+  system.afterStep(s);
+}
+
+}  // namespace mysim

@@ -1,0 +1,166 @@
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include "mysim/implicit_euler_step.h"
+#include "mysim/integrator.h"
+#include "mysim/particle_system.h"
+#include "mysim/sparse_ldlt3.h"
+
+namespace mysim {
+namespace {
+
+constexpr int kParallelParticles = 512;  // below this one thread is faster (particle_system.cpp)
+
+// Liu, O'Brien, Liu, Kavan and Xiao, "Fast simulation of mass-spring systems" (SIGGRAPH Asia
+// 2013): the implicit-Euler step (implicit_euler_step.h) solved by block coordinate descent on
+//   g(x, d) = 1/(2 h^2) |x - y~|^2_M~ + sum_s k_s/2 |x_i - x_j - d_s|^2,   |d_s| = rest_s,
+// alternating the local step (d_s = rest_s u_s, u_s the spring's direction at the current x;
+// g's minimum over d for fixed x) and the global step (g's minimum over x for fixed d, one linear
+// system with the constant matrix M~/h^2 + L, the same for x, y and z). Each pass lowers g, and
+// g's minimum over d is Liu's energy: the iterate converges (linearly) to the implicit-Euler
+// minimiser. x starts at y~, the inertial prediction.
+//
+// Spring damping (derived here; Liu adds none): the damping force at v1 = (x - x0)/h on end i,
+//   -(c/h) u u^T (dx_i - dx_j) = -(c/h)(dx_i - dx_j) + (c/h)(I - u u^T)(dx_i - dx_j),
+// keeps its isotropic part in the matrix (weight c/h beside k, so the matrix stays constant) and
+// moves the part across the spring, with u and dx from the current iterate, to the right-hand
+// side. At a fixed point the step's equation holds exactly; the lagged part is bounded above by
+// the matrix part it mirrors (0 <= I - u u^T <= I), so the passes still contract.
+// Drag folds into M~ and y~ exactly (implicit_euler_step.h). Pins are eliminated: only free
+// particles are unknowns, a pinned neighbour's term (k + c/h) x_pin(t + h) moves to the
+// right-hand side. The matrix is factored once per scene and step size (SparseLdlt3); its time is
+// reported apart from stepping (StepCounts::setup_seconds). Colliders: the contacts after the
+// step, as every integrator (afterStep).
+class LocalGlobal final : public Integrator {
+ public:
+  explicit LocalGlobal(int iterations) : iterations_(iterations) {}
+
+  StepCounts step(OdeSystem& system, State& s, double h) override {
+    ParticleSystem& ps = *system.particles();
+    StepCounts counts{.accepted = 1};
+    if (h != factored_h_) {
+      counts.setup_seconds = factorFor(ps, h);
+      if (!factored_) {
+        counts.solver_failures = 1;
+        counts.gave_up = true;
+        return counts;
+      }
+    }
+    prepareImplicitEulerStep(ps, s, h, step_);
+    x_ = step_.target;
+    for (int it = 0; it < iterations_; ++it) {
+      localStep(ps.model());
+      globalStep(ps);
+    }
+    counts.derivative_evaluations = iterations_;
+    counts.linear_iterations = iterations_;
+    finishImplicitEulerStep(system, step_, x_, s);
+    return counts;
+  }
+
+ private:
+  // Numbers the free particles and factors M~/h^2 + sum_s (k_s + c_s/h) over them; seconds.
+  double factorFor(const ParticleSystem& ps, double h) {
+    const auto start = std::chrono::steady_clock::now();
+    const Model& model = ps.model();
+    const int n = ps.particleCount();
+    free_index_.assign(n, -1);
+    free_particles_.clear();
+    for (int p = 0; p < n; ++p) {
+      if (!model.pinned[p]) {
+        free_index_[p] = static_cast<int>(free_particles_.size());
+        free_particles_.push_back(p);
+      }
+    }
+    std::vector<Eigen::Triplet<double>> entries;
+    for (int p : free_particles_) {
+      const double m_eff = model.mass[p] + h * model.drag;
+      entries.emplace_back(free_index_[p], free_index_[p], m_eff / (h * h));
+    }
+    weight_.resize(static_cast<Eigen::Index>(model.springs.size()));
+    for (int k = 0; k < static_cast<int>(model.springs.size()); ++k) {
+      const Spring& sp = model.springs[k];
+      weight_[k] = sp.stiffness + sp.damping / h;
+      const int a = free_index_[sp.i], b = free_index_[sp.j];
+      if (a >= 0) entries.emplace_back(a, a, weight_[k]);
+      if (b >= 0) entries.emplace_back(b, b, weight_[k]);
+      if (a >= 0 && b >= 0) entries.emplace_back(std::max(a, b), std::min(a, b), -weight_[k]);
+    }
+    const int unknowns = static_cast<int>(free_particles_.size());
+    Eigen::SparseMatrix<double> matrix(unknowns, unknowns);
+    matrix.setFromTriplets(entries.begin(), entries.end());
+    std::string error;
+    factored_ = factor_.factor(matrix, error);
+    factored_h_ = h;
+    spring_term_.resize(3 * static_cast<Eigen::Index>(model.springs.size()));
+    rhs_.resize(3 * unknowns);
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
+  // Each spring's right-hand-side term for its i end (its j end takes the negative):
+  //   k rest u + (c/h) [ (x0_i - x0_j) + (I - u u^T)(dx_i - dx_j) ].
+  void localStep(const Model& model) {
+    const int count = static_cast<int>(model.springs.size());
+    const double* x = x_.data();
+    const double* x0 = step_.x0.data();
+#pragma omp parallel for schedule(static) if (count >= 4 * kParallelParticles)
+    for (int k = 0; k < count; ++k) {
+      const Spring& sp = model.springs[k];
+      const Vec3 d = Eigen::Map<const Vec3>(x + 3 * sp.i) - Eigen::Map<const Vec3>(x + 3 * sp.j);
+      const double l = d.norm();
+      const Vec3 u = l > 0.0 ? Vec3(d / l) : Vec3::Zero();
+      Vec3 term = sp.stiffness * sp.rest_length * u;
+      if (sp.damping != 0.0) {
+        const Vec3 d0 =
+            Eigen::Map<const Vec3>(x0 + 3 * sp.i) - Eigen::Map<const Vec3>(x0 + 3 * sp.j);
+        const Vec3 moved = d - d0;
+        term += (sp.damping / step_.h) * (d0 + moved - u.dot(moved) * u);
+      }
+      spring_term_.segment<3>(3 * k) = term;
+    }
+  }
+
+  // Gathers each free particle's right-hand side from its springs, then the two triangular sweeps.
+  void globalStep(const ParticleSystem& ps) {
+    const Model& model = ps.model();
+    const SpringAdjacency& a = ps.adjacency();
+    const int unknowns = static_cast<int>(free_particles_.size());
+#pragma omp parallel for schedule(static) if (unknowns >= kParallelParticles)
+    for (int f = 0; f < unknowns; ++f) {
+      const int p = free_particles_[f];
+      Vec3 b = step_.mass_over_h2[p] * step_.target.segment<3>(3 * p);
+      for (int e = a.offsets[p]; e < a.offsets[p + 1]; ++e) {
+        const int k = a.spring[e], q = a.other[e];
+        const Vec3 term = spring_term_.segment<3>(3 * k);
+        b += model.springs[k].i == p ? term : Vec3(-term);
+        if (model.pinned[q]) b += weight_[k] * step_.target.segment<3>(3 * q);
+      }
+      rhs_.segment<3>(3 * f) = b;
+    }
+    factor_.solve(rhs_);
+    for (int f = 0; f < unknowns; ++f) {
+      x_.segment<3>(3 * free_particles_[f]) = rhs_.segment<3>(3 * f);
+    }
+  }
+
+  int iterations_;
+  double factored_h_ = 0.0;
+  bool factored_ = false;
+  SparseLdlt3 factor_;
+  std::vector<int> free_index_;      // (N) unknown of each free particle, -1 if pinned
+  std::vector<int> free_particles_;  // (F) particle of each unknown
+  Vector weight_;                    // (S) k + c/h: each spring's matrix weight
+  Vector spring_term_;               // (3S) the local step's right-hand-side term
+  Vector rhs_;                       // (3F) the global step's right-hand side, then its solution
+  Vector x_;                         // (3N) the iterate
+  ImplicitEulerStep step_;
+};
+
+}  // namespace
+
+std::unique_ptr<Integrator> makeLocalGlobal(const IntegratorSettings& s) {
+  return std::make_unique<LocalGlobal>(static_cast<int>(s.value("iterations")));
+}
+
+}  // namespace mysim

@@ -1,0 +1,134 @@
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "mysim/graph_coloring.h"
+#include "mysim/implicit_euler_step.h"
+#include "mysim/integrator.h"
+#include "mysim/particle_system.h"
+
+namespace mysim {
+namespace {
+
+// Vertex block descent: Chen, Macklin, Yang, Kim and Mueller, "Vertex Block Descent" (SIGGRAPH
+// 2024). The implicit-Euler step (implicit_euler_step.h) solved by Gauss-Seidel over vertices:
+// each free vertex in turn takes one 3 x 3 Newton step on its own part of the step's problem,
+// the others held (Algorithm 1):
+//   f_i = -m~/h^2 (x_i - y~_i) - sum_s [ k (l - rest) u + (c/h) u u^T (dx_i - dx_j) ]   (u from j to i)
+//   H_i =  m~/h^2 I + sum_s [ k (u u^T + max(0, 1 - rest/l)(I - u u^T)) + (c/h) u u^T ]
+//   x_i += H_i^-1 f_i.
+// The spring Hessian's compressive term is clamped so H_i is positive definite (the paper skips a
+// vertex whose H_i is near singular; with the clamp none is). A fixed point has f_i = 0 for every
+// vertex: the step's equations, so VBD converges to the same minimiser as backward Euler iterated
+// to convergence and local/global. Vertices of one colour (graph_coloring.h) share no spring, so a
+// colour runs in parallel with the same bits at any thread count.
+// Initial guess: the paper's adaptive one (sec. 3.7), x0 + h v0 + h^2 a~ with a~ the external
+// acceleration scaled by the part of it the vertex had last step, clamp(a_prev . a^ / |a|, 0, 1)
+// (a_prev = (v0 - v_prev) / h; the first step takes all of it). Acceleration: Chebyshev
+// (sec. 3.8, after Wang 2015) with spectral radius estimate rho; rho = 0, the default, turns it
+// off (measured: docs/findings.md).
+class VertexBlockDescent final : public Integrator {
+ public:
+  VertexBlockDescent(int iterations, double rho) : iterations_(iterations), rho_(rho) {}
+
+  StepCounts step(OdeSystem& system, State& s, double h) override {
+    ParticleSystem& ps = *system.particles();
+    const int n = ps.particleCount();
+    if (colors_.empty() && n > 0) colors_ = colorParticles(ps.adjacency());
+    prepareImplicitEulerStep(ps, s, h, step_);
+    initialGuess(ps, s, h);
+    double omega = 1.0;
+    for (int it = 0; it < iterations_; ++it) {
+      if (rho_ > 0.0) previous_ = x_;
+      for (const std::vector<int>& color : colors_) relaxColor(ps, color);
+      if (rho_ > 0.0) omega = accelerate(it, omega);
+    }
+    previous_velocity_ = s.y.tail(3 * n);
+    finishImplicitEulerStep(system, step_, x_, s);
+    return {.accepted = 1,
+            .derivative_evaluations = iterations_,
+            .linear_iterations = iterations_};
+  }
+
+ private:
+  void initialGuess(const ParticleSystem& ps, const State& s, double h) {
+    const Model& model = ps.model();
+    const int n = ps.particleCount();
+    const Vector zero_velocity = Vector::Zero(3 * n);
+    const bool has_previous = previous_velocity_.size() == 3 * n;
+    x_ = step_.target;  // pinned: on their path
+    for (int p = 0; p < n; ++p) {
+      if (model.pinned[p]) continue;
+      const Vec3 a = ps.externalForce(p, step_.t_end, zero_velocity.data()) / model.mass[p];
+      double share = 1.0;
+      if (has_previous && a.norm() > 0.0) {
+        const Vec3 a_prev = (s.y.segment<3>(3 * n + 3 * p) - previous_velocity_.segment<3>(3 * p)) / h;
+        share = std::clamp(a_prev.dot(a) / a.squaredNorm(), 0.0, 1.0);
+      }
+      x_.segment<3>(3 * p) =
+          s.y.segment<3>(3 * p) + h * s.y.segment<3>(3 * n + 3 * p) + h * h * share * a;
+    }
+  }
+
+  // One Newton step per vertex of a colour (in parallel: they share no spring).
+  void relaxColor(const ParticleSystem& ps, const std::vector<int>& color) {
+    const Model& model = ps.model();
+    const SpringAdjacency& a = ps.adjacency();
+    const int count = static_cast<int>(color.size());
+    double* x = x_.data();
+    const double* x0 = step_.x0.data();
+    const double inverse_h = 1.0 / step_.h;
+#pragma omp parallel for schedule(static) if (count >= kParallelVertices)
+    for (int c = 0; c < count; ++c) {
+      const int p = color[c];
+      if (model.pinned[p]) continue;
+      Eigen::Map<Vec3> xp(x + 3 * p);
+      const double m = step_.mass_over_h2[p];
+      Vec3 f = -m * (xp - step_.target.segment<3>(3 * p));
+      Mat3 hessian = m * Mat3::Identity();
+      for (int e = a.offsets[p]; e < a.offsets[p + 1]; ++e) {
+        const Spring& sp = model.springs[a.spring[e]];
+        const int q = a.other[e];
+        const Vec3 d = xp - Eigen::Map<const Vec3>(x + 3 * q);
+        const double l = d.norm();
+        if (l == 0.0) continue;  // no direction: the spring gives no step
+        const Vec3 u = d / l;
+        const Mat3 uu = u * u.transpose();
+        const Vec3 moved = d - (Eigen::Map<const Vec3>(x0 + 3 * p) - Eigen::Map<const Vec3>(x0 + 3 * q));
+        const double damping = sp.damping * inverse_h;
+        f -= (sp.stiffness * (l - sp.rest_length) + damping * u.dot(moved)) * u;
+        const double across = std::max(0.0, 1.0 - sp.rest_length / l);
+        hessian += (sp.stiffness + damping) * uu + sp.stiffness * across * (Mat3::Identity() - uu);
+      }
+      xp += hessian.llt().solve(f);
+    }
+  }
+
+  // Chebyshev semi-iteration over whole passes: x = omega (x - x_{n-2}) + x_{n-2}.
+  double accelerate(int it, double omega) {
+    if (it == 0) omega = 1.0;
+    else if (it == 1) omega = 2.0 / (2.0 - rho_ * rho_);
+    else omega = 4.0 / (4.0 - rho_ * rho_ * omega);
+    if (it >= 1) x_ = omega * (x_ - before_previous_) + before_previous_;
+    before_previous_ = previous_;
+    return omega;
+  }
+
+  static constexpr int kParallelVertices = 1024;  // below this, threads cost more than they save
+  int iterations_;
+  double rho_;
+  std::vector<std::vector<int>> colors_;
+  Vector x_;                  // (3N) the iterate
+  Vector previous_, before_previous_;  // (3N) iterates one and two passes back (acceleration)
+  Vector previous_velocity_;  // (3N) the last step's start velocity (initial guess)
+  ImplicitEulerStep step_;
+};
+
+}  // namespace
+
+std::unique_ptr<Integrator> makeVertexBlockDescent(const IntegratorSettings& s) {
+  return std::make_unique<VertexBlockDescent>(static_cast<int>(s.value("iterations")),
+                                              s.value("acceleration_rho"));
+}
+
+}  // namespace mysim

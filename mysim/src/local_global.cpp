@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <chrono>
 #include <string>
 #include <vector>
@@ -6,6 +7,7 @@
 #include "mysim/integrator.h"
 #include "mysim/particle_system.h"
 #include "mysim/sparse_ldlt3.h"
+#include "mysim/spring_forces.h"
 
 namespace mysim {
 namespace {
@@ -93,47 +95,52 @@ class LocalGlobal final : public Integrator {
     std::string error;
     factored_ = factor_.factor(matrix, error);
     factored_h_ = h;
-    spring_term_.resize(3 * static_cast<Eigen::Index>(model.springs.size()));
+    scale_.resize(static_cast<Eigen::Index>(model.springs.size()));
     rhs_.resize(3 * unknowns);
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 
-  // Each spring's right-hand-side term for its i end (its j end takes the negative):
-  //   k rest u + (c/h) [ (x0_i - x0_j) + (I - u u^T)(dx_i - dx_j) ].
+  // The local step: each spring's rest direction at the current iterate, kept as the scalar
+  // k rest / l = k - scale with the force loop's vectorised scale = k (1 - rest / l), so the
+  // right-hand side's spring term k rest u reads (k - scale)(x_i - x_j).
   void localStep(const Model& model) {
     const int count = static_cast<int>(model.springs.size());
-    const double* x = x_.data();
-    const double* x0 = step_.x0.data();
+    constexpr int kBlock = 512;  // springs a thread takes at a time (as the force loop)
+    const int blocks = (count + kBlock - 1) / kBlock;
 #pragma omp parallel for schedule(static) if (count >= 4 * kParallelParticles)
-    for (int k = 0; k < count; ++k) {
-      const Spring& sp = model.springs[k];
-      const Vec3 d = Eigen::Map<const Vec3>(x + 3 * sp.i) - Eigen::Map<const Vec3>(x + 3 * sp.j);
-      const double l = d.norm();
-      const Vec3 u = l > 0.0 ? Vec3(d / l) : Vec3::Zero();
-      Vec3 term = sp.stiffness * sp.rest_length * u;
-      if (sp.damping != 0.0) {
-        const Vec3 d0 =
-            Eigen::Map<const Vec3>(x0 + 3 * sp.i) - Eigen::Map<const Vec3>(x0 + 3 * sp.j);
-        const Vec3 moved = d - d0;
-        term += (sp.damping / step_.h) * (d0 + moved - u.dot(moved) * u);
-      }
-      spring_term_.segment<3>(3 * k) = term;
+    for (int b = 0; b < blocks; ++b) {
+      springScales(model.springs, false, x_.data(), nullptr, scale_.data(), b * kBlock,
+                   std::min(count, (b + 1) * kBlock));
     }
   }
 
-  // Gathers each free particle's right-hand side from its springs, then the two triangular sweeps.
+  // The global step: each free particle's right-hand side gathered from its springs (seen from
+  // either end the terms read the same, d = x_p - x_q):
+  //   b_p = m~/h^2 y~_p + sum (k rest / l) d + (c/h) [ d0 + (I - u u^T)(d - d0) ] + w x_q (q pinned),
+  // then the two triangular sweeps.
   void globalStep(const ParticleSystem& ps) {
     const Model& model = ps.model();
     const SpringAdjacency& a = ps.adjacency();
     const int unknowns = static_cast<int>(free_particles_.size());
+    const double* x = x_.data();
+    const double* x0 = step_.x0.data();
+    const double inverse_h = 1.0 / step_.h;
 #pragma omp parallel for schedule(static) if (unknowns >= kParallelParticles)
     for (int f = 0; f < unknowns; ++f) {
       const int p = free_particles_[f];
       Vec3 b = step_.mass_over_h2[p] * step_.target.segment<3>(3 * p);
       for (int e = a.offsets[p]; e < a.offsets[p + 1]; ++e) {
         const int k = a.spring[e], q = a.other[e];
-        const Vec3 term = spring_term_.segment<3>(3 * k);
-        b += model.springs[k].i == p ? term : Vec3(-term);
+        const Spring& sp = model.springs[k];
+        const Vec3 d = Eigen::Map<const Vec3>(x + 3 * p) - Eigen::Map<const Vec3>(x + 3 * q);
+        b += (sp.stiffness - scale_[k]) * d;
+        if (sp.damping != 0.0) {
+          const double l = d.norm();
+          const Vec3 u = l > 0.0 ? Vec3(d / l) : Vec3::Zero();
+          const Vec3 d0 = Eigen::Map<const Vec3>(x0 + 3 * p) - Eigen::Map<const Vec3>(x0 + 3 * q);
+          const Vec3 moved = d - d0;
+          b += (sp.damping * inverse_h) * (d0 + moved - u.dot(moved) * u);
+        }
         if (model.pinned[q]) b += weight_[k] * step_.target.segment<3>(3 * q);
       }
       rhs_.segment<3>(3 * f) = b;
@@ -151,7 +158,7 @@ class LocalGlobal final : public Integrator {
   std::vector<int> free_index_;      // (N) unknown of each free particle, -1 if pinned
   std::vector<int> free_particles_;  // (F) particle of each unknown
   Vector weight_;                    // (S) k + c/h: each spring's matrix weight
-  Vector spring_term_;               // (3S) the local step's right-hand-side term
+  Vector scale_;                     // (S) k (1 - rest / l) at the current iterate
   Vector rhs_;                       // (3F) the global step's right-hand side, then its solution
   Vector x_;                         // (3N) the iterate
   ImplicitEulerStep step_;

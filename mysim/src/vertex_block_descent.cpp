@@ -28,19 +28,30 @@ namespace {
 // (sec. 3.8, after Wang 2015) with spectral radius estimate rho; rho = 0, the default, turns it
 // off (measured: docs/findings.md).
 class VertexBlockDescent final : public Integrator {
+  struct Color {
+    int begin, end;  // its vertices in vertices_
+  };
+  struct Vertex {
+    int particle, first;  // its incidences: [first, next vertex's first)
+  };
+  struct Incidence {
+    int other;
+    double rest_length, stiffness, damping;
+  };
+
  public:
   VertexBlockDescent(int iterations, double rho) : iterations_(iterations), rho_(rho) {}
 
   StepCounts step(OdeSystem& system, State& s, double h) override {
     ParticleSystem& ps = *system.particles();
     const int n = ps.particleCount();
-    if (colors_.empty() && n > 0) colors_ = colorParticles(ps.adjacency());
+    if (vertices_.empty() && n > 0) pack(ps);
     prepareImplicitEulerStep(ps, s, h, step_);
     initialGuess(ps, s, h);
     double omega = 1.0;
     for (int it = 0; it < iterations_; ++it) {
       if (rho_ > 0.0) previous_ = x_;
-      for (const std::vector<int>& color : colors_) relaxColor(ps, color);
+      for (const Color& color : colors_) relaxColor(color);
       if (rho_ > 0.0) omega = accelerate(it, omega);
     }
     previous_velocity_ = s.y.tail(3 * n);
@@ -70,36 +81,59 @@ class VertexBlockDescent final : public Integrator {
     }
   }
 
-  // One Newton step per vertex of a colour (in parallel: they share no spring).
-  void relaxColor(const ParticleSystem& ps, const std::vector<int>& color) {
+  // The free vertices in colour order, each with its springs' far ends and parameters laid out
+  // one after another, so a pass streams one array instead of gathering spring records.
+  void pack(const ParticleSystem& ps) {
     const Model& model = ps.model();
     const SpringAdjacency& a = ps.adjacency();
-    const int count = static_cast<int>(color.size());
+    for (const std::vector<int>& color : colorParticles(a)) {
+      Color packed{static_cast<int>(vertices_.size()), 0};
+      for (int p : color) {
+        if (model.pinned[p]) continue;
+        vertices_.push_back({p, static_cast<int>(incidences_.size())});
+        for (int e = a.offsets[p]; e < a.offsets[p + 1]; ++e) {
+          const Spring& sp = model.springs[a.spring[e]];
+          incidences_.push_back({a.other[e], sp.rest_length, sp.stiffness, sp.damping});
+        }
+      }
+      packed.end = static_cast<int>(vertices_.size());
+      colors_.push_back(packed);
+    }
+    vertices_.push_back({-1, static_cast<int>(incidences_.size())});  // the last one's end
+  }
+
+  // One Newton step per vertex of a colour (in parallel: they share no spring). The Hessian as
+  // a I + sum beta u u^T, its six distinct entries summed.
+  void relaxColor(const Color& color) {
     double* x = x_.data();
     const double* x0 = step_.x0.data();
     const double inverse_h = 1.0 / step_.h;
-#pragma omp parallel for schedule(static) if (count >= kParallelVertices)
-    for (int c = 0; c < count; ++c) {
-      const int p = color[c];
-      if (model.pinned[p]) continue;
+#pragma omp parallel for schedule(static) if (color.end - color.begin >= kParallelVertices)
+    for (int v = color.begin; v < color.end; ++v) {
+      const int p = vertices_[v].particle;
       Eigen::Map<Vec3> xp(x + 3 * p);
+      const Vec3 x0p = Eigen::Map<const Vec3>(x0 + 3 * p);
       const double m = step_.mass_over_h2[p];
       Vec3 f = -m * (xp - step_.target.segment<3>(3 * p));
-      Mat3 hessian = m * Mat3::Identity();
-      for (int e = a.offsets[p]; e < a.offsets[p + 1]; ++e) {
-        const Spring& sp = model.springs[a.spring[e]];
-        const int q = a.other[e];
-        const Vec3 d = xp - Eigen::Map<const Vec3>(x + 3 * q);
+      double diagonal = m, hxx = 0, hyy = 0, hzz = 0, hxy = 0, hxz = 0, hyz = 0;
+      for (int e = vertices_[v].first; e < vertices_[v + 1].first; ++e) {
+        const Incidence& in = incidences_[e];
+        const Vec3 d = xp - Eigen::Map<const Vec3>(x + 3 * in.other);
         const double l = d.norm();
         if (l == 0.0) continue;  // no direction: the spring gives no step
-        const Vec3 u = d / l;
-        const Mat3 uu = u * u.transpose();
-        const Vec3 moved = d - (Eigen::Map<const Vec3>(x0 + 3 * p) - Eigen::Map<const Vec3>(x0 + 3 * q));
-        const double damping = sp.damping * inverse_h;
-        f -= (sp.stiffness * (l - sp.rest_length) + damping * u.dot(moved)) * u;
-        const double across = std::max(0.0, 1.0 - sp.rest_length / l);
-        hessian += (sp.stiffness + damping) * uu + sp.stiffness * across * (Mat3::Identity() - uu);
+        const double inverse_l = 1.0 / l;  // one division for u and rest / l
+        const Vec3 u = inverse_l * d;
+        const Vec3 moved = d - (x0p - Eigen::Map<const Vec3>(x0 + 3 * in.other));
+        const double damping = in.damping * inverse_h;
+        f -= (in.stiffness * (l - in.rest_length) + damping * u.dot(moved)) * u;
+        const double across = in.stiffness * std::max(0.0, 1.0 - in.rest_length * inverse_l);
+        const double along = in.stiffness + damping - across;
+        diagonal += across;
+        hxx += along * u.x() * u.x(), hyy += along * u.y() * u.y(), hzz += along * u.z() * u.z();
+        hxy += along * u.x() * u.y(), hxz += along * u.x() * u.z(), hyz += along * u.y() * u.z();
       }
+      Mat3 hessian;
+      hessian << diagonal + hxx, hxy, hxz, hxy, diagonal + hyy, hyz, hxz, hyz, diagonal + hzz;
       xp += hessian.llt().solve(f);
     }
   }
@@ -117,7 +151,9 @@ class VertexBlockDescent final : public Integrator {
   static constexpr int kParallelVertices = 1024;  // below this, threads cost more than they save
   int iterations_;
   double rho_;
-  std::vector<std::vector<int>> colors_;
+  std::vector<Color> colors_;
+  std::vector<Vertex> vertices_;  // free vertices in colour order, then one end marker
+  std::vector<Incidence> incidences_;
   Vector x_;                  // (3N) the iterate
   Vector previous_, before_previous_;  // (3N) iterates one and two passes back (acceleration)
   Vector previous_velocity_;  // (3N) the last step's start velocity (initial guess)

@@ -35,10 +35,11 @@ class Xpbd final : public Integrator {
     const int n = ps.particleCount();
     if (inverse_mass_.size() != n) prepare(model);
     const double hs = h / substeps_;
+    if (hs != prepared_hs_) prepareSubstep(model, hs);
     for (int sub = 0; sub < substeps_; ++sub) {
       predict(ps, s, hs);
       lambda_.setZero();
-      for (int it = 0; it < iterations_; ++it) projectSprings(model, s, hs);
+      for (int it = 0; it < iterations_; ++it) projectSprings(s);
       s.y.tail(3 * n) = (s.y.head(3 * n) - x_prev_) / hs;
       // Pins on their path with its velocity, then the contacts: after every substep.
       system.afterStep(s);
@@ -56,6 +57,22 @@ class Xpbd final : public Integrator {
     for (int p = 0; p < model.particleCount(); ++p) {
       inverse_mass_[p] = model.pinned[p] ? 0.0 : 1.0 / model.mass[p];
     }
+  }
+
+  // The springs of each colour laid out one after another, with their constants for substeps of
+  // hs (alpha~ and gamma, computed as the pass would): a pass then streams one array instead of
+  // gathering spring records from all over the list (the same operations in the same order, so
+  // the same bits).
+  void prepareSubstep(const Model& model, double hs) {
+    packed_.clear();
+    for (const std::vector<int>& color : colors_) {
+      for (int k : color) {
+        const Spring& sp = model.springs[k];
+        packed_.push_back({sp.i, sp.j, sp.rest_length, inverse_mass_[sp.i], inverse_mass_[sp.j],
+                           1.0 / (sp.stiffness * hs * hs), sp.damping / (sp.stiffness * hs)});
+      }
+    }
+    prepared_hs_ = hs;
   }
 
   // Unconstrained motion under the other forces, the pins on their path at the substep's end.
@@ -77,41 +94,49 @@ class Xpbd final : public Integrator {
   }
 
   // One Gauss-Seidel pass, colour by colour (a colour in parallel: its springs share no end).
-  void projectSprings(const Model& model, State& s, double hs) {
+  void projectSprings(State& s) {
     double* x = s.y.data();
     const double* xp = x_prev_.data();
+    int begin = 0;
     for (const std::vector<int>& color : colors_) {
       const int count = static_cast<int>(color.size());
+      const PackedSpring* springs = packed_.data() + begin;
+      begin += count;
 #pragma omp parallel for schedule(static) if (count >= kParallelSprings)
       for (int c = 0; c < count; ++c) {
-        const int k = color[c];
-        const Spring& sp = model.springs[k];
-        const double wi = inverse_mass_[sp.i], wj = inverse_mass_[sp.j];
+        const PackedSpring& sp = springs[c];
+        const double wi = sp.wi, wj = sp.wj;
         if (wi + wj == 0.0) continue;
         Eigen::Map<Vec3> xi(x + 3 * sp.i), xj(x + 3 * sp.j);
         const Vec3 d = xi - xj;
         const double length = d.norm();
         if (length == 0.0) continue;  // no direction to push along
         const Vec3 unit = d / length;
-        const double alpha = 1.0 / (sp.stiffness * hs * hs);
-        const double gamma = sp.damping / (sp.stiffness * hs);
         const Vec3 moved = (xi - Eigen::Map<const Vec3>(xp + 3 * sp.i)) -
                            (xj - Eigen::Map<const Vec3>(xp + 3 * sp.j));
+        double& lambda = lambda_[begin - count + c];
         const double dlambda =
-            (-(length - sp.rest_length) - alpha * lambda_[k] - gamma * unit.dot(moved)) /
-            ((1.0 + gamma) * (wi + wj) + alpha);
+            (-(length - sp.rest_length) - sp.alpha * lambda - sp.gamma * unit.dot(moved)) /
+            ((1.0 + sp.gamma) * (wi + wj) + sp.alpha);
         xi += wi * dlambda * unit;
         xj -= wj * dlambda * unit;
-        lambda_[k] += dlambda;
+        lambda += dlambda;
       }
     }
   }
 
   // Below this many springs in a colour, threads cost more than they save.
   static constexpr int kParallelSprings = 2048;
+  struct PackedSpring {
+    int i, j;
+    double rest_length, wi, wj;  // wi, wj: the ends' inverse masses (0 pinned)
+    double alpha, gamma;         // alpha~ = 1 / (k h_s^2), gamma = c / (k h_s)
+  };
   int substeps_, iterations_;
+  double prepared_hs_ = 0.0;
+  std::vector<PackedSpring> packed_;  // (S) the springs in colour order, for substeps of prepared_hs_
   std::vector<std::vector<int>> colors_;
-  Vector lambda_;        // (S) accumulated multiplier of each spring, this substep
+  Vector lambda_;        // (S) accumulated multiplier of each spring (colour order), this substep
   Vector inverse_mass_;  // (N) 0 for pinned particles
   Vector x_prev_;        // (3N) positions at the substep's start
 };

@@ -1,5 +1,6 @@
 """The report's pages, in order: what the manifest holds decides which exist."""
 import dashboard
+import family_page
 import drape_pages
 import energy_pages
 import missing_page
@@ -12,6 +13,7 @@ import trade_pages
 def pages(ctx):
     m = ctx.manifest
     result = dashboard.pages(ctx)
+    result += family_page.pages(m)
     result += trade_pages.pages(m)
     result += stability_pages.pages(m)
     result += energy_pages.pages(m)

@@ -1,5 +1,6 @@
 """Speed against accuracy, and convergence, from the sweep tables."""
 import math
+import os
 from collections import defaultdict
 
 import numpy as np
@@ -33,8 +34,12 @@ def legend_outside(fig, ax):
     """One legend right of the plots (the last panel's entries: every panel has the same series)."""
     for old in fig.legends:
         old.remove()
-    fig.legend(*ax.get_legend_handles_labels(), loc="upper left", bbox_to_anchor=(0.81, 0.88),
-               fontsize=7.5, frameon=False)
+    handles, labels = ax.get_legend_handles_labels()
+    # A long name (an integrator with its parameters) on two lines, so it stays on the page.
+    labels = [label.replace(":", "\n   ", 2).replace("\n   ", ":", 1) if len(label) > 26 else label
+              for label in labels]
+    fig.legend(handles, labels, loc="upper left", bbox_to_anchor=(0.81, 0.88), fontsize=7.5,
+               frameon=False)
 
 
 def pareto(points):
@@ -47,20 +52,26 @@ def pareto(points):
     return front
 
 
+def style_key(row):
+    """The series' style: mysim's integrator without its parameters ('mysim:xpbd' for
+    'mysim:xpbd:substeps=10'), so a method keeps its colour and its settings take line styles."""
+    return ":".join(series_key(row).split(":")[:2])
+
+
 def collect(rows, x_column):
-    """label -> sorted points, and label -> (style key, variant): a series' tolerances (dopri5's)
-    take line styles in turn, from the loosest."""
+    """label -> sorted points, and label -> (style key, variant): a method's variants (dopri5's
+    tolerances from the loosest, then parameter settings by name) take line styles in turn."""
     series, variants = defaultdict(list), {}
-    tols = defaultdict(set)
+    labels = defaultdict(set)
     for r in rows:
-        tols[series_key(r)].add(r.get("tolerance") or "")
-    order = {key: sorted(t, key=lambda v: -(number(v) or 0)) for key, t in tols.items()}
+        labels[style_key(r)].add((-(number(r.get("tolerance")) or 0), label_of(r)))
+    order = {key: [label for _, label in sorted(v)] for key, v in labels.items()}
     for r in rows:
         x, e = number(r[x_column]), number(r["error"])
         if r["status"] == "ok" and x and e:
-            key = series_key(r)
+            key = style_key(r)
             series[label_of(r)].append((x, e))
-            variants[label_of(r)] = (key, order[key].index(r.get("tolerance") or ""))
+            variants[label_of(r)] = (key, order[key].index(label_of(r)))
     for pts in series.values():
         pts.sort()
     return series, variants
@@ -69,15 +80,19 @@ def collect(rows, x_column):
 def speed_accuracy_page(sweep):
     def draw(fig, ctx):
         rows = read_csv(sweep["path"])
-        scales = sorted({number(r["stiffness_scale"]) for r in rows})
-        grid = plot_area(fig, 1, len(scales), right=0.8, wspace=0.25)
+        # One panel per scene and stiffness: runs of different scenes never share a line.
+        panels = sorted({(r["scene"], number(r["stiffness_scale"])) for r in rows},
+                        key=lambda p: ([r["scene"] for r in rows].index(p[0]), p[1]))
+        several_scenes = len({scene for scene, _ in panels}) > 1
+        grid = plot_area(fig, 1, len(panels), right=0.8, wspace=0.25)
         notes, blown = [], defaultdict(set)
-        for i, scale in enumerate(scales):
+        for i, (scene, scale) in enumerate(panels):
             ax = fig.add_subplot(grid[0, i])
-            part = [r for r in rows if number(r["stiffness_scale"]) == scale]
+            part = [r for r in rows if r["scene"] == scene and number(r["stiffness_scale"]) == scale]
+            name = (os.path.basename(scene) + ", " if several_scenes else "") + f"stiffness x{scale:g}"
             for r in part:
                 if r["status"] != "ok":
-                    blown[scale].add(label_of(r))
+                    blown[name].add(label_of(r))
             series, variants = collect(part, "wall_seconds")
             if not series:
                 ax.text(0.5, 0.5, "no run finished", ha="center", transform=ax.transAxes)
@@ -87,11 +102,11 @@ def speed_accuracy_page(sweep):
             ax.step(*zip(*front), where="post", color="black", lw=2.2, alpha=0.5, label="Pareto front")
             ax.set_xlabel("wall time of the stepping, fastest of the repeats [s]")
             ax.set_ylabel("error against the reference [m]")
-            ax.set_title(f"stiffness x{scale:g}" + (f"  ({len(blown[scale])} series lost runs)" if blown[scale] else ""),
+            ax.set_title(name + (f"  ({len(blown[name])} series lost runs)" if blown[name] else ""),
                          fontsize=10)
             ax.grid(True, which="both", alpha=0.3)
             legend_outside(fig, ax)
-        lost = [f"stiffness x{s:g}: {', '.join(sorted(b))}" for s, b in blown.items() if b]
+        lost = [f"{n}: {', '.join(sorted(b))}" for n, b in blown.items() if b]
         return notes + ([f"Runs that blew up or hit a limit are left out ({'; '.join(lost)})."] if lost else [])
     reference = "the converged reference named in the table"
     return Page(f"speed_accuracy_{sweep['name']}",

@@ -7,7 +7,8 @@
 #   out/sweep/      speed/accuracy and convergence sweeps
 #   out/stability/  largest stable steps against theory (the oscillator, and every engine on
 #                   the chain and the cloth), and the extremes
-#   out/recommend/  the cheapest engine, integrator and step under 1 mm of error, per sweep
+#   out/recommend/  the cheapest engine, integrator and step under 1 mm of error, per sweep, and
+#                   each solver family's cheapest under 1 mm and 1 cm
 #   out/report/     report.pdf and one PNG per figure
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -36,10 +37,14 @@ done
 # The answer users want, for the report's first page: the cheapest choice under 1 mm of error on
 # each sweep measured against one converged reference (exit 1 when nothing qualifies: a result).
 mkdir -p "$OUT/recommend"
-for table in "$OUT"/sweep/chain_convergence.csv "$OUT"/sweep/cloth_speed_accuracy.csv; do
+for table in "$OUT"/sweep/chain_convergence.csv "$OUT"/sweep/cloth_speed_accuracy.csv \
+    "$OUT"/sweep/solver_families.csv; do
   $B recommend "$table" --max-error 1e-3 --json "$OUT/recommend/$(basename "$table" .csv).json" \
     >/dev/null || [ $? -eq 1 ]
 done
+# Which solver family at 1 cm too (the report's solver-family page sets the two bounds side by side).
+$B recommend "$OUT"/sweep/solver_families.csv --max-error 1e-2 \
+  --json "$OUT/recommend/solver_families_1cm.json" >/dev/null || [ $? -eq 1 ]
 $B stability --out "$OUT/stability" --extremes >/dev/null
 # Every engine's stability map on the chain and the cloth, with the w_max theory lines (the
 # cloth over two mass ratios to stay inside the job's time; --mass-ratios 1,100,1e4 for all).

@@ -84,5 +84,36 @@ TEST(SceneStability, ImplicitEnginesAreStableAtTheLargestStepTried) {
   }
 }
 
+// A taut, damped chain at rest between two pins: forward Euler's unstable modes grow by a factor
+// barely above 1 a step near its limit, so where the search puts the limit depends on the
+// amplitude they start from. Unseeded that is the arithmetic's round-off: noise of 1e-8 of a rest
+// length (what single precision leaves) moves the limit by a third (measured 1.49e-4 s without
+// it, 1.01e-4 s with it: 0.68, the 0.66-0.80 that float steppers showed against mysim). From the
+// seeded start (1e-4 of a rest length) the same noise moves it by less than the search's 2 %
+// (measured: 6.51e-5 s both).
+//
+//   o--o--o--o--o--o--o--o   both ends pinned, every spring stretched 10 %, drag, no gravity
+TEST(SceneStability, SeededStartMakesTheLimitIndependentOfRoundOff) {
+  mysim::Scene scene = chain(7, 1e4, 0.05);
+  scene.chain.direction = mysim::Vec3(1, 0, 0);
+  scene.gravity = mysim::Vec3::Zero();
+  scene.drag = 0.5;
+  mysim::Model clean = mysim::buildModel(scene);
+  const int n = clean.particleCount();
+  for (int p = 0; p < n; ++p) clean.start_position[3 * p] *= 1.1;
+  clean.pinned[n - 1] = 1;
+  mysim::Model noisy = clean;  // round-off of a float engine: 1e-8 of a rest length, alternating
+  for (int c = 0; c < 3 * n; ++c) noisy.start_position[c] += (c % 2 ? 1e-9 : -1e-9);
+  const EngineRegistry registry;
+  const RunConfig config = runConfig(scene);
+  auto limit = [&](const mysim::Model& model, double seed) {
+    SceneStabilitySettings settings;
+    settings.seed_amplitude = seed;
+    return sceneStability(registry, model, config, "mysim:euler", settings).h_stable;
+  };
+  EXPECT_LT(limit(noisy, 0.0) / limit(clean, 0.0), 0.85);  // unseeded: the precision's limit
+  EXPECT_NEAR(limit(noisy, 1e-4) / limit(clean, 1e-4), 1.0, 0.02);
+}
+
 }  // namespace
 }  // namespace springcheck

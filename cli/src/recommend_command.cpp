@@ -37,6 +37,7 @@ json choiceJson(const std::optional<Choice>& c) {
   if (!c) return nullptr;
   return {{"engine", c->engine},
           {"integrator", c->integrator},
+          {"family", c->family},
           {"tolerance", c->tolerance},
           {"dt", c->dt},
           {"error", c->error},
@@ -119,6 +120,14 @@ json reportRecommendation(const Recommendation& r, Cost cost, const EngineRegist
     if (kind == "mysim") mysim_best = std::max(mysim_best, c.realtime_factor);
     if (kind == "bullet") bullet_best = std::max(bullet_best, c.realtime_factor);
   }
+  json per_family = json::array();
+  if (!r.per_family.empty()) std::cout << "  each solver family's cheapest under the bound:\n";
+  for (const Choice& c : r.per_family) {
+    std::cout << "    " << c.family << ": " << describe(c) << '\n';
+    per_family.push_back(choiceJson(c));
+  }
+  json closest = json::array();
+  for (const Choice& c : r.closest_per_family) closest.push_back(choiceJson(c));
   json ratio = nullptr;
   if (mysim_best > 0 && bullet_best > 0) {
     ratio = mysim_best / bullet_best;
@@ -128,7 +137,9 @@ json reportRecommendation(const Recommendation& r, Cost cost, const EngineRegist
   return {{"scene", r.scene},           {"stiffness_scale", r.stiffness_scale},
           {"candidates", r.candidates}, {"meeting", r.meeting},
           {"best", choiceJson(r.best)}, {"runner_up", choiceJson(r.runner_up)},
-          {"per_engine", per_engine},   {"mysim_over_bullet_realtime", ratio}};
+          {"per_engine", per_engine},   {"per_family", per_family},
+          {"closest_per_family", closest},
+          {"mysim_over_bullet_realtime", ratio}};
 }
 
 int recommendCommand(const RecommendOptions& o) {

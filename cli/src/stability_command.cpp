@@ -20,6 +20,7 @@ struct StabilityOptions {
   std::vector<double> mass_ratios = {1, 100, 1e4};
   long steps = 4000;
   bool whole_run = false;
+  double seed_amplitude = 1e-4;  // SceneStabilitySettings::seed_amplitude
   std::vector<std::string> engines_files;
   std::vector<std::string> integrators = mysim::integratorNames(true);
   std::vector<double> stiffness = {10, 100, 1e3, 1e4, 1e5};
@@ -72,6 +73,7 @@ int sceneStabilityMaps(const StabilityOptions& o, const EngineRegistry& registry
     }
   }
   settings.search.steps = o.steps;
+  settings.search.seed_amplitude = o.seed_amplitude;
   if (o.whole_run) settings.search.duration = scene.duration;
   const std::vector<StabilityMapCell> cells = stabilityMaps(registry, scene, settings);
   std::printf("%-24s %4s %9s %7s %11s %11s %11s %7s %7s  %s\n", "engine", "pass", "k [N/m]",
@@ -157,6 +159,12 @@ void addStabilityCommand(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   cmd->add_option("--steps", o->steps, "Scene maps: steps per trial run")
       ->check(CLI::Range(10L, 10'000'000L))
+      ->capture_default_str();
+  cmd->add_option("--seed-amplitude", o->seed_amplitude,
+                  "Scene maps: every trial starts with its free particles moved by up to this "
+                  "fraction of the shortest rest length (seeded, the same in every engine), so "
+                  "a limit does not depend on an engine's round-off; 0 turns it off")
+      ->check(CLI::Range(0.0, 1e-2))
       ->capture_default_str();
   cmd->add_flag("--whole-run", o->whole_run,
                 "Scene maps: every trial runs the scene's whole duration instead of --steps "

@@ -1,4 +1,7 @@
+#include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <sstream>
 #include <limits>
 
 #include "mysim/integrator.h"
@@ -220,6 +223,54 @@ std::expected<std::string, std::string> canonicalIntegratorName(std::string_view
   }
   return std::unexpected("unknown integrator '" + clip(std::string(name), 40) +
                          "'; expected one of " + valid);
+}
+
+std::string IntegratorVariant::text() const {
+  std::ostringstream out;
+  out << name;
+  for (const auto& [key, value] : values) out << ':' << key << '=' << value;
+  return out.str();
+}
+
+std::expected<IntegratorVariant, std::string> parseIntegratorVariant(std::string_view text) {
+  const std::size_t colon = text.find(':');
+  auto name = canonicalIntegratorName(text.substr(0, colon));
+  if (!name) return std::unexpected(name.error());
+  IntegratorVariant variant{*name, {}};
+  const IntegratorInfo& info = *findIntegrator(*name);
+  std::string_view rest = colon == std::string_view::npos ? "" : text.substr(colon + 1);
+  while (colon != std::string_view::npos) {
+    const std::size_t next = rest.find(':');
+    const std::string_view item = rest.substr(0, next);
+    const std::size_t equals = item.find('=');
+    const std::string key(item.substr(0, equals));
+    auto p = std::find_if(info.parameters.begin(), info.parameters.end(),
+                          [&](const IntegratorParameter& q) { return q.in_values && q.name == key; });
+    if (p == info.parameters.end()) {
+      std::string declared;
+      for (const IntegratorParameter& q : info.parameters) {
+        if (q.in_values) declared += (declared.empty() ? "" : ", ") + q.name;
+      }
+      return std::unexpected("'" + clip(std::string(text), 60) + "': " + info.name +
+                             " has no parameter '" + clip(key, 30) + "'; it has " +
+                             (declared.empty() ? "none to set" : declared));
+    }
+    double value = 0.0;
+    const std::string number = equals == std::string_view::npos ? "" : std::string(item.substr(equals + 1));
+    const auto [end, error] = std::from_chars(number.data(), number.data() + number.size(), value);
+    if (number.empty() || error != std::errc() || end != number.data() + number.size() ||
+        value < p->low || value > p->high || (p->integer && value != std::floor(value))) {
+      std::ostringstream expected;
+      expected << (p->integer ? "an integer" : "a number") << " in [" << p->low << ", " << p->high
+               << "]";
+      return std::unexpected("'" + clip(std::string(text), 60) + "': " + key + " must be " +
+                             expected.str());
+    }
+    variant.values[key] = value;
+    if (next == std::string_view::npos) break;
+    rest = rest.substr(next + 1);
+  }
+  return variant;
 }
 
 std::expected<std::unique_ptr<Integrator>, std::string> makeIntegrator(

@@ -169,6 +169,18 @@ std::expected<json, std::string> reportManifest(const std::string& results_dir,
           "the dashboard's recommendation");
     }
   }
+  // Every recommendation written, with its bound (a sweep recommended at 1 mm and at 1 cm has
+  // two): what the solver-family page compares.
+  m["recommendation_bounds"] = json::array();
+  for (const fs::path& rec : filesIn(results / "recommend", "", ".json")) {
+    std::ifstream in(rec);
+    const json j = json::parse(in, nullptr, false);
+    if (j.is_discarded() || !j.contains("table") || !j.contains("max_error")) continue;
+    m["recommendation_bounds"].push_back(
+        {{"sweep", fs::path(j["table"].get<std::string>()).stem().string()},
+         {"max_error", j["max_error"]},
+         {"path", rec.string()}});
+  }
   if (m["sweeps"].empty()) {
     for (const char* spec :
          {"chain_convergence", "cloth_speed_accuracy", "chain_self_consistency"}) {

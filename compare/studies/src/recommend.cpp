@@ -4,7 +4,31 @@
 #include <cstdio>
 #include <map>
 
+#include "mysim/integrator.h"
+
 namespace springcheck {
+namespace {
+
+std::string familyOf(const std::string& engine, const std::string& integrator) {
+  if (integrator.empty() || integrator == "-") return engine;
+  const auto variant = mysim::parseIntegratorVariant(integrator);
+  return variant ? mysim::familyName(mysim::findIntegrator(variant->name)->family) : integrator;
+}
+
+// Each key's first choice, in order (the list is cheapest first, so each first is the best).
+template <typename Key>
+std::vector<Choice> firstOfEach(const std::vector<Choice>& sorted, Key key) {
+  std::vector<Choice> out;
+  for (const Choice& c : sorted) {
+    if (std::none_of(out.begin(), out.end(), [&](const Choice& seen) { return key(seen) == key(c); })) {
+      out.push_back(c);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 std::vector<Recommendation> recommend(const std::vector<SweepRow>& rows, double max_error,
                                       Cost cost) {
   std::vector<std::pair<std::string, double>> order;  // groups in the table's order
@@ -17,6 +41,7 @@ std::vector<Recommendation> recommend(const std::vector<SweepRow>& rows, double 
     Choice c;
     c.engine = row.c.engine;
     c.integrator = row.c.integrator;
+    c.family = familyOf(c.engine, c.integrator);
     c.tolerance = sweepField(row, "tolerance");
     c.dt = row.c.dt;
     c.error = *row.error;
@@ -48,12 +73,12 @@ std::vector<Recommendation> recommend(const std::vector<SweepRow>& rows, double 
     });
     if (!meeting.empty()) r.best = meeting[0];
     if (meeting.size() > 1) r.runner_up = meeting[1];
-    for (const Choice& c : meeting) {  // cheapest first, so each engine's first is its best
-      if (std::none_of(r.per_engine.begin(), r.per_engine.end(),
-                       [&](const Choice& seen) { return seen.engine == c.engine; })) {
-        r.per_engine.push_back(c);
-      }
-    }
+    r.per_engine = firstOfEach(meeting, [](const Choice& c) { return c.engine; });
+    r.per_family = firstOfEach(meeting, [](const Choice& c) { return c.family; });
+    std::vector<Choice> by_error = groups[key];
+    std::stable_sort(by_error.begin(), by_error.end(),
+                     [](const Choice& a, const Choice& b) { return a.error < b.error; });
+    r.closest_per_family = firstOfEach(by_error, [](const Choice& c) { return c.family; });
     out.push_back(r);
   }
   return out;

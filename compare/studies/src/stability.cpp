@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <limits>
 
@@ -134,9 +135,30 @@ mysim::Model stressedModel(const mysim::Model& model, double stiffness, double m
   return m;
 }
 
-StabilityLimit sceneStability(const EngineRegistry& registry, const mysim::Model& model,
+mysim::Model seededStart(const mysim::Model& model, double amplitude) {
+  mysim::Model seeded = model;
+  if (amplitude <= 0.0 || model.springs.empty()) return seeded;
+  double shortest = std::numeric_limits<double>::infinity();
+  for (const mysim::Spring& sp : model.springs) shortest = std::min(shortest, sp.rest_length);
+  for (int p = 0; p < model.particleCount(); ++p) {
+    if (model.pinned[p]) continue;
+    for (int c = 0; c < 3; ++c) {
+      // splitmix64 of the coordinate's index: uniform in [-1, 1).
+      std::uint64_t z = 0x9e3779b97f4a7c15ULL * static_cast<std::uint64_t>(3 * p + c + 1);
+      z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+      z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+      z ^= z >> 31;
+      const double unit = static_cast<double>(z >> 11) * 0x1.0p-53 * 2.0 - 1.0;
+      seeded.start_position[3 * p + c] += amplitude * shortest * unit;
+    }
+  }
+  return seeded;
+}
+
+StabilityLimit sceneStability(const EngineRegistry& registry, const mysim::Model& unseeded,
                               const RunConfig& config, const std::string& engine,
                               const SceneStabilitySettings& settings) {
+  const mysim::Model model = seededStart(unseeded, settings.seed_amplitude);
   const double w_max = highestFrequency(model);
   // Without a spring mode to scale by, search the scene's own range.
   const double h_min = w_max > 0 ? settings.h_min_omega / w_max : config.run.dt / 100;

@@ -39,9 +39,9 @@ void readEngines(mysim::FieldReader& top, const EngineRegistry& registry, SweepS
   s.integrators.clear();
   for (const std::string& name :
        top.has("integrators") ? top.textList("integrators") : std::vector<std::string>{"rk4"}) {
-    auto canonical = mysim::canonicalIntegratorName(name);
-    if (!canonical) throw FieldError{"integrators", canonical.error()};
-    s.integrators.push_back(*canonical);
+    auto variant = mysim::parseIntegratorVariant(name);  // "xpbd:substeps=10" sets a parameter
+    if (!variant) throw FieldError{"integrators", variant.error()};
+    s.integrators.push_back(variant->text());
   }
 }
 
@@ -163,7 +163,8 @@ std::vector<SweepCase> expandSweep(const SweepSpec& spec) {
         const std::vector<std::string> integrators =
             takes_integrator ? spec.integrators : std::vector<std::string>{"-"};
         for (const std::string& integrator : integrators) {
-          const mysim::IntegratorInfo* info = mysim::findIntegrator(integrator);
+          const auto variant = mysim::parseIntegratorVariant(integrator);
+          const mysim::IntegratorInfo* info = variant ? mysim::findIntegrator(variant->name) : nullptr;
           const std::vector<double> tolerances =
               info && info->adaptive() && !spec.tolerances.empty() ? spec.tolerances
                                                                    : std::vector<double>{0.0};
@@ -207,7 +208,12 @@ std::expected<CaseRun, std::string> caseRun(const SweepSpec& spec, const SweepCa
     return std::unexpected(spec.source + ": scene " + c.scene + " is not one of the spec's");
   }
   CaseRun run{mysim::buildModel(cached->second), runConfig(cached->second)};
-  if (c.integrator != "-") run.config.integrator.name = c.integrator;
+  if (c.integrator != "-") {
+    auto variant = mysim::parseIntegratorVariant(c.integrator);
+    if (!variant) return std::unexpected(spec.source + ": " + variant.error());
+    run.config.integrator.name = variant->name;
+    for (const auto& [key, value] : variant->values) run.config.integrator.values[key] = value;
+  }
   run.config.run.dt = c.dt;
   if (spec.duration) run.config.run.duration = *spec.duration;
   run.config.run.sample_interval = spec.sample_interval;

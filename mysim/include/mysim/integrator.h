@@ -116,6 +116,17 @@ const IntegratorInfo* findIntegrator(std::string_view name);  // by name or alia
 // Canonical name for a name or alias, or an error listing the valid ones.
 std::expected<std::string, std::string> canonicalIntegratorName(std::string_view name);
 
+// An integrator with some of its numeric catalogue parameters set, as a sweep names it:
+// "NAME" or "NAME:PARAMETER=VALUE[:PARAMETER=VALUE...]" (for example "xpbd:substeps=10:iterations=1").
+struct IntegratorVariant {
+  std::string name;                      // canonical
+  std::map<std::string, double> values;  // parameters the text sets
+  std::string text() const;              // canonical text: name, then parameters in name order
+};
+// Checks the name and each parameter against the catalogue (declared by that integrator, in its
+// range, an integer where it must be); an error names what is wrong.
+std::expected<IntegratorVariant, std::string> parseIntegratorVariant(std::string_view text);
+
 std::expected<std::unique_ptr<Integrator>, std::string> makeIntegrator(
     const IntegratorSettings& settings);
 

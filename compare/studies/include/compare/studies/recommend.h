@@ -16,6 +16,9 @@ enum class Cost { WallTime, Work };
 
 struct Choice {
   std::string engine, integrator, tolerance;  // integrator "-" for engines without one
+  // The solver family it stands for: the integrator's catalogue family (mysim: "symplectic",
+  // "implicit", "position-based", "local-global", "block-descent", ...), else the engine's name.
+  std::string family;
   double dt = 0.0;
   double error = 0.0;  // the sweep's error column (max over frames against its reference), m
   double wall_seconds = 0.0;
@@ -37,6 +40,12 @@ struct Recommendation {
   // Each engine's own cheapest choice under the bound (mysim: over all its integrators), the
   // cheapest first: speed at equal accuracy, engine against engine.
   std::vector<Choice> per_engine;
+  // Each solver family's cheapest choice under the bound, the cheapest first (which family to
+  // use for this cloth at this error).
+  std::vector<Choice> per_family;
+  // Each family's most accurate finished run, met or not (what a family can reach at all in this
+  // sweep), the most accurate first.
+  std::vector<Choice> closest_per_family;
 };
 
 // Per scene and stiffness scale of the table, in the table's order. Only rows that ran to the

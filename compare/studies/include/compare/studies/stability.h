@@ -63,7 +63,21 @@ struct SceneStabilitySettings {
   double h_min_omega = 1e-2;  // search range, as h w_max
   double h_max_omega = 30.0;
   double precision = 0.02;  // stop when h_unstable / h_stable < 1 + precision
+  // Every trial starts from the scene's state with each free particle moved by up to this
+  // fraction of the shortest spring's rest length per coordinate (seededStart): the unstable
+  // modes start at that amplitude in every engine, not at the engine's round-off (0: off).
+  double seed_amplitude = 1e-4;
 };
+
+// The model with its free particles' start positions perturbed by up to `amplitude` times the
+// shortest rest length per coordinate, from a counter hash of the particle and coordinate: the
+// same numbers for every engine and run. Why: just above a step limit the growing mode grows by a
+// factor close to 1 a step; started from round-off it needs ~ln(1e16) / ln(growth) steps to show
+// in double precision but ~ln(1e7) / ln(growth) in float, so an unseeded search measures the
+// precision (float steppers failed at 0.66-0.80 of mysim's limit for the same method). Seeded at
+// 1e-4 of a rest length (a strain of 1e-4, far above either round-off and far below anything
+// nonlinear), the limit is the method's and the step's.
+mysim::Model seededStart(const mysim::Model& model, double amplitude);
 
 // Largest stable step of one engine on a (stressed) model by bisection in log h; stable = no
 // health check fails (blow-up, strain, energy, energy rise in a passive scene, step limit).

@@ -21,6 +21,7 @@ struct StabilityOptions {
   long steps = 4000;
   bool whole_run = false;
   double seed_amplitude = 1e-4;  // SceneStabilitySettings::seed_amplitude
+  double max_h_omega = 30.0;     // SceneStabilitySettings::h_max_omega
   std::vector<std::string> engines_files;
   std::vector<std::string> integrators = mysim::integratorNames(true);
   std::vector<double> stiffness = {10, 100, 1e3, 1e4, 1e5};
@@ -74,6 +75,7 @@ int sceneStabilityMaps(const StabilityOptions& o, const EngineRegistry& registry
   }
   settings.search.steps = o.steps;
   settings.search.seed_amplitude = o.seed_amplitude;
+  settings.search.h_max_omega = o.max_h_omega;
   if (o.whole_run) settings.search.duration = scene.duration;
   const std::vector<StabilityMapCell> cells = stabilityMaps(registry, scene, settings);
   std::printf("%-24s %4s %9s %7s %11s %11s %11s %7s %7s  %s\n", "engine", "pass", "k [N/m]",
@@ -165,6 +167,11 @@ void addStabilityCommand(CLI::App& app, int& exit_code) {
                   "fraction of the shortest rest length (seeded, the same in every engine), so "
                   "a limit does not depend on an engine's round-off; 0 turns it off")
       ->check(CLI::Range(0.0, 1e-2))
+      ->capture_default_str();
+  cmd->add_option("--max-h-omega", o->max_h_omega,
+                  "Scene maps: the largest step tried, as h w_max (raise it to find where the "
+                  "implicit and position-based families stop being stable)")
+      ->check(CLI::Range(1.0, 1e6))
       ->capture_default_str();
   cmd->add_flag("--whole-run", o->whole_run,
                 "Scene maps: every trial runs the scene's whole duration instead of --steps "

@@ -22,6 +22,7 @@ struct StabilityOptions {
   bool whole_run = false;
   double seed_amplitude = 1e-4;  // SceneStabilitySettings::seed_amplitude
   double max_h_omega = 30.0;     // SceneStabilitySettings::h_max_omega
+  std::string name;              // the map's table, stability_NAME.csv (default: the scene's)
   std::vector<std::string> engines_files;
   std::vector<std::string> integrators = mysim::integratorNames(true);
   std::vector<double> stiffness = {10, 100, 1e3, 1e4, 1e5};
@@ -89,8 +90,9 @@ int sceneStabilityMaps(const StabilityOptions& o, const EngineRegistry& registry
                 l.unstable_check.empty() ? "" : ": ", l.unstable_check.substr(0, 60).c_str());
   }
   if (!makeFolder(o.out)) return kFailure;
-  const std::string path = o.out + "/stability_" + scene.name + ".csv";
-  if (report(writeStabilityMaps(path, scene.name, cells)) != kOk) return kFailure;
+  const std::string name = o.name.empty() ? scene.name : o.name;
+  const std::string path = o.out + "/stability_" + name + ".csv";
+  if (report(writeStabilityMaps(path, name, cells)) != kOk) return kFailure;
   std::cout << "results in " << path << '\n';
   return kOk;
 }
@@ -173,6 +175,9 @@ void addStabilityCommand(CLI::App& app, int& exit_code) {
                   "implicit and position-based families stop being stable)")
       ->check(CLI::Range(1.0, 1e6))
       ->capture_default_str();
+  cmd->add_option("--name", o->name,
+                  "Scene maps: name of the map (its table is stability_NAME.csv; default: the "
+                  "scene's name), to keep two maps of one scene apart");
   cmd->add_flag("--whole-run", o->whole_run,
                 "Scene maps: every trial runs the scene's whole duration instead of --steps "
                 "(a slow instability then shows; costs many steps at small steps)");

@@ -122,23 +122,30 @@ def convergence_page(sweep):
         rows = read_csv(sweep["path"])
         scale = min(number(r["stiffness_scale"]) for r in rows)
         rows = [r for r in rows if number(r["stiffness_scale"]) == scale]
-        ax = fig.add_subplot(plot_area(fig, right=0.8)[0, 0])
-        series, variants = collect(rows, "dt")
-        if not series:
-            ax.text(0.5, 0.5, "no run finished", ha="center", transform=ax.transAxes)
-            return []
-        notes = draw_series(ax, series, variants, ctx)
-        dts = sorted({p[0] for pts in series.values() for p in pts})
-        errors = [p[1] for pts in series.values() for p in pts]
-        anchor = math.exp(np.mean(np.log(errors)))
-        h = np.array([dts[0], dts[-1]])
-        for order, style in ((1, ":"), (2, "--"), (4, "-.")):
-            ax.loglog(h, anchor * (h / h[-1]) ** order, style, color="0.55", lw=1.1, label=f"slope {order}")
-        ax.set_xlabel("step dt [s]")
-        refs = sorted({r["reference"] for r in rows if r.get("reference")})
-        ax.set_ylabel(f"error against {', '.join(refs) or 'the reference'} [m]")
-        ax.grid(True, which="both", alpha=0.3)
-        legend_outside(fig, ax)
+        scenes = list(dict.fromkeys(r["scene"] for r in rows))  # one panel each, in table order
+        grid = plot_area(fig, 1, len(scenes), right=0.8, wspace=0.25)
+        notes = []
+        for i, scene in enumerate(scenes):
+            ax = fig.add_subplot(grid[0, i])
+            part = [r for r in rows if r["scene"] == scene]
+            series, variants = collect(part, "dt")
+            if not series:
+                ax.text(0.5, 0.5, "no run finished", ha="center", transform=ax.transAxes)
+                continue
+            notes += draw_series(ax, series, variants, ctx)
+            dts = sorted({p[0] for pts in series.values() for p in pts})
+            errors = [p[1] for pts in series.values() for p in pts]
+            anchor = math.exp(np.mean(np.log(errors)))
+            h = np.array([dts[0], dts[-1]])
+            for order, style in ((1, ":"), (2, "--"), (4, "-.")):
+                ax.loglog(h, anchor * (h / h[-1]) ** order, style, color="0.55", lw=1.1, label=f"slope {order}")
+            ax.set_xlabel("step dt [s]")
+            refs = sorted({r["reference"] for r in part if r.get("reference")})
+            ax.set_ylabel(f"error against {', '.join(refs) or 'the reference'} [m]")
+            if len(scenes) > 1:
+                ax.set_title(os.path.basename(scene), fontsize=10)
+            ax.grid(True, which="both", alpha=0.3)
+            legend_outside(fig, ax)
         return notes
     against = ("each engine against itself at a finer step (self-consistency), so Bullet is measured "
                "against Bullet" if sweep["self_reference"] else "one converged reference run")

@@ -4,9 +4,13 @@
 #include <iostream>
 
 #include "commands.h"
+#include "compare/engines/interrupts.h"
 #include "springcheck_commit.h"
 
 int main(int argc, char** argv) {
+  // First, before any thread starts: SIGINT and SIGTERM stop the engines springcheck started
+  // and remove their scratch before it exits 128 + n (compare/engines/interrupts.h).
+  springcheck::handleInterrupts();
   // A reader that goes away (`springcheck stability | head`) must not kill the run halfway: the
   // results it writes are files, written whole; only the printing is lost.
   std::signal(SIGPIPE, SIG_IGN);

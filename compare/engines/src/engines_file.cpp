@@ -44,17 +44,24 @@ ExternalEngineSpec readEntry(mysim::FieldReader& r) {
   spec.command = r.textList("command");
   for (std::size_t k = 0; k < spec.command.size(); ++k) {
     const std::string& text = spec.command[k];
-    for (std::size_t open = text.find('{'); open != std::string::npos;
-         open = text.find('{', open + 1)) {
-      const std::size_t close = text.find('}', open);
+    // As the substitution reads it (external_engine.cpp): "{{" and "}}" are literal braces,
+    // {env:NAME} an environment variable, anything else in braces must be a known placeholder.
+    for (std::size_t at = 0; at < text.size(); ++at) {
+      if (text.compare(at, 2, "{{") == 0 || text.compare(at, 2, "}}") == 0) {
+        ++at;
+        continue;
+      }
+      if (text[at] != '{') continue;
+      const std::size_t close = text.find('}', at);
       if (close == std::string::npos) break;  // a lone brace is the program's business
-      const std::string name = text.substr(open + 1, close - open - 1);
-      if (!placeholders().count(name)) {
+      const std::string name = text.substr(at + 1, close - at - 1);
+      if (!placeholders().count(name) && !(name.starts_with("env:") && name.size() > 4)) {
         throw FieldError{r.field("command") + "[" + std::to_string(k) + "]",
                          "unknown placeholder {" + mysim::clip(name, 40) +
                              "} (known: {model} {out} {dir} {python} {dt} {duration} {integrator} "
-                             "{scene})"};
+                             "{scene}, {env:NAME}; {{ and }} for a literal brace)"};
       }
+      at = close;
     }
   }
   spec.time_limit = r.positive("time_limit", spec.time_limit);

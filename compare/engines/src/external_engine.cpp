@@ -4,9 +4,10 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 
 #include "compare/engines/engine_registry.h"
-#include "compare/engines/external_engine.h"
+#include "compare/engines/interrupts.h"
 #include "compare/io/text_format.h"
 #include "mysim/circle_system.h"
 #include "process.h"
@@ -26,7 +27,10 @@ class ScratchDir {
  public:
   explicit ScratchDir(const std::string& engine) {
     std::string pattern = (fs::temp_directory_path() / ("springcheck-" + engine + "-XXXXXX"));
-    if (mkdtemp(pattern.data())) path_ = pattern;
+    if (mkdtemp(pattern.data())) {
+      path_ = pattern;
+      tracked_.emplace(path_);  // removed by the interrupt handler too
+    }
   }
   ~ScratchDir() {
     std::error_code ec;
@@ -38,9 +42,52 @@ class ScratchDir {
 
  private:
   std::string path_;
+  std::optional<TrackedScratch> tracked_;
 };
 
 std::string number(double v) { return formatNumber(v, 17); }  // round-trips exactly
+
+}  // namespace
+
+std::expected<std::string, std::string> substitutePlaceholders(
+    const std::string& arg, const std::vector<std::pair<std::string, std::string>>& values) {
+  // One pass, left to right: what a placeholder becomes is never read again, so a folder named
+  // "{dir}" or a TMPDIR holding "{out}" is text, not another placeholder.
+  std::string result;
+  for (std::size_t at = 0; at < arg.size();) {
+    if (arg.compare(at, 2, "{{") == 0 || arg.compare(at, 2, "}}") == 0) {  // a literal brace
+      result += arg[at];
+      at += 2;
+      continue;
+    }
+    if (arg.compare(at, 5, "{env:") == 0) {
+      const std::size_t close = arg.find('}', at);
+      const std::string name = close == std::string::npos ? "" : arg.substr(at + 5, close - at - 5);
+      const char* value = name.empty() ? nullptr : std::getenv(name.c_str());
+      if (!value) {
+        return std::unexpected("'" + arg + "': " +
+                               (name.empty() ? std::string("{env:NAME} needs a name and a closing brace")
+                                             : "the environment has no " + name));
+      }
+      result += value;
+      at = close + 1;
+      continue;
+    }
+    bool replaced = false;
+    for (const auto& [key, value] : values) {
+      if (arg.compare(at, key.size(), key) == 0) {
+        result += value;
+        at += key.size();
+        replaced = true;
+        break;
+      }
+    }
+    if (!replaced) result += arg[at++];
+  }
+  return result;
+}
+
+namespace {
 
 // Replays an engine's frames through the run loop: at each step a frame was asked for, the state
 // becomes that frame; between frames only the time moves (those states are never recorded).
@@ -112,23 +159,22 @@ std::expected<Execution, EngineError> execute(const ExternalEngineSpec& spec,
   if (auto written = writeModelFile(scratch.path(), model, config, run.plan); !written) {
     return std::unexpected(failed(who + ": " + written.error()));
   }
+  const std::vector<std::pair<std::string, std::string>> values = {
+      {"{model}", scratch.path() + "/model.json"},
+      {"{out}", out},
+      {"{dir}", spec.dir},
+      {"{python}", std::string(SPRINGCHECK_PYTHON).empty() ? "python3" : SPRINGCHECK_PYTHON},
+      {"{dt}", number(config.run.dt)},
+      {"{duration}", number(config.run.duration)},
+      {"{integrator}", config.integrator.name},
+      {"{scene}", config.scene_name}};
   std::vector<std::string> argv;
-  for (std::string arg : spec.command) {
-    const std::pair<const char*, std::string> values[] = {
-        {"{model}", scratch.path() + "/model.json"},
-        {"{out}", out},
-        {"{dir}", spec.dir},
-        {"{python}", std::string(SPRINGCHECK_PYTHON).empty() ? "python3" : SPRINGCHECK_PYTHON},
-        {"{dt}", number(config.run.dt)},
-        {"{duration}", number(config.run.duration)},
-        {"{integrator}", config.integrator.name},
-        {"{scene}", config.scene_name}};
-    for (const auto& [key, value] : values) {
-      for (std::size_t at; (at = arg.find(key)) != std::string::npos;) {
-        arg.replace(at, std::string(key).size(), value);
-      }
+  for (const std::string& arg : spec.command) {
+    auto substituted = substitutePlaceholders(arg, values);
+    if (!substituted) {
+      return std::unexpected(failed(who + ": command in " + spec.source + ": " + substituted.error()));
     }
-    argv.push_back(arg);
+    argv.push_back(*substituted);
   }
   // A relative program path is the engines file's, not the working folder's.
   if (argv[0].find('/') != std::string::npos && fs::path(argv[0]).is_relative()) {
@@ -137,7 +183,7 @@ std::expected<Execution, EngineError> execute(const ExternalEngineSpec& spec,
   const std::string log = scratch.path() + "/engine.log";
   const ProcessResult p = runProcess(argv, log, spec.time_limit);
   run.process_seconds = p.wall_seconds;
-  if (!p.started) return std::unexpected(failed(who + ": " + p.error));
+  if (!p.started || !p.error.empty()) return std::unexpected(failed(who + ": " + p.error));
   if (p.timed_out) {
     return std::unexpected(failed(who + ": killed at its time limit of " + number(spec.time_limit) +
                                   " s (time_limit in " + spec.source +

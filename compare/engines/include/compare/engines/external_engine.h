@@ -13,12 +13,19 @@ namespace springcheck {
 struct ExternalEngineSpec {
   std::string name;
   std::string description;
-  // argv, with placeholders {model} {out} {dir} {python} {dt} {duration} {integrator} {scene}.
+  // argv, with placeholders {model} {out} {dir} {python} {dt} {duration} {integrator} {scene},
+  // {env:NAME}, and {{ }} for literal braces.
   std::vector<std::string> command;
   double time_limit = 600.0;  // s, for one run
   std::string source;         // the engines file, for messages
   std::string dir;            // its folder: {dir}, and relative programs resolve against it
 };
+
+// A command argument with its placeholders replaced in one pass, left to right (a value is never
+// read again: a folder named "{dir}" stays text): `values` ({"{model}", path}, ...), {env:NAME}
+// (an error if the environment has no NAME), "{{" and "}}" for literal braces.
+[[nodiscard]] std::expected<std::string, std::string> substitutePlaceholders(
+    const std::string& arg, const std::vector<std::pair<std::string, std::string>>& values);
 
 // Reads and validates an engines file: {"engines": [{"name", "command", "time_limit",
 // "description"}]}. Refuses, naming the file and the field: a missing or mistyped field, a name

@@ -1,0 +1,49 @@
+// An engines file's command placeholders (compare/engines/external_engine.h): substituted once,
+// left to right, so a value that holds placeholder text stays text (a folder named "{dir}", a
+// TMPDIR holding "{out}" once looped for ever); {env:NAME} and literal braces.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+#include "compare/engines/external_engine.h"
+
+namespace springcheck {
+namespace {
+
+const std::vector<std::pair<std::string, std::string>> kValues = {
+    {"{model}", "/scratch/{out}/model.json"}, {"{out}", "/scratch/{out}/out"}, {"{dir}", "/a/{dir}"}};
+
+TEST(Placeholders, AValueHoldingPlaceholderTextIsNotSubstitutedAgain) {
+  EXPECT_EQ(substitutePlaceholders("{dir}/engine.py", kValues).value(), "/a/{dir}/engine.py");
+  EXPECT_EQ(substitutePlaceholders("--out={out}", kValues).value(), "--out=/scratch/{out}/out");
+  EXPECT_EQ(substitutePlaceholders("{model}{out}", kValues).value(),
+            "/scratch/{out}/model.json/scratch/{out}/out");
+}
+
+TEST(Placeholders, DoubledBracesAreLiteralBraces) {
+  EXPECT_EQ(substitutePlaceholders("{{model}}", kValues).value(), "{model}");
+  EXPECT_EQ(substitutePlaceholders("x{{}}y", kValues).value(), "x{}y");
+}
+
+TEST(Placeholders, EnvReadsTheEnvironmentOrNamesWhatIsMissing) {
+  setenv("SPRINGCHECK_PLACEHOLDER_TEST", "/opt/sim", 1);
+  EXPECT_EQ(substitutePlaceholders("{env:SPRINGCHECK_PLACEHOLDER_TEST}/bin/sim", kValues).value(),
+            "/opt/sim/bin/sim");
+  unsetenv("SPRINGCHECK_PLACEHOLDER_TEST");
+  auto missing = substitutePlaceholders("{env:SPRINGCHECK_PLACEHOLDER_TEST}/bin", kValues);
+  ASSERT_FALSE(missing);
+  EXPECT_NE(missing.error().find("SPRINGCHECK_PLACEHOLDER_TEST"), std::string::npos);
+}
+
+TEST(Placeholders, TheEnginesFileAcceptsEnvAndBracesAndRefusesAnUnknownOne) {
+  const std::string ok = R"({"engines": [{"name": "e", "command": ["{env:HOME}/sim", "{{x}}", "{model}"]}]})";
+  EXPECT_TRUE(parseEnginesFile(ok, "engines.json"));
+  const std::string bad = R"({"engines": [{"name": "e", "command": ["{modle}"]}]})";
+  auto refused = parseEnginesFile(bad, "engines.json");
+  ASSERT_FALSE(refused);
+  EXPECT_NE(refused.error().find("{modle}"), std::string::npos) << refused.error();
+  EXPECT_NE(refused.error().find("engines.json"), std::string::npos) << refused.error();
+}
+
+}  // namespace
+}  // namespace springcheck

@@ -122,6 +122,24 @@ TEST_F(InputFiles, ASweepOverAScenePathWithACommaResumesWithoutRerunning) {
   EXPECT_EQ(*runSweep(registry_, *s, table, {}), 0);  // both rows kept: nothing runs again
 }
 
+// A JSON text with bytes that are not UTF-8 (a log line, a file name): written with them
+// replaced, not thrown (nlohmann's type_error.316); and a writer that throws anyway leaves the
+// previous file and no temporary beside it.
+TEST_F(InputFiles, AJsonWriteWithInvalidUtf8IsWholeAndAThrowingWriterLeavesNoTemporary) {
+  const std::string path = (dir_ / "summary.json").string();
+  const nlohmann::json j = {{"note", std::string("engine said \xff\xfe")}};
+  ASSERT_TRUE(writeFileAtomically(path, [&](std::ostream& out) { out << jsonText(j, 2); }));
+  std::ifstream in(path);
+  const nlohmann::json back = nlohmann::json::parse(in);
+  EXPECT_EQ(back["note"].get<std::string>(), "engine said \xef\xbf\xbd\xef\xbf\xbd");
+  auto thrown = writeFileAtomically(path, [&](std::ostream& out) { out << j.dump(2); });
+  ASSERT_FALSE(thrown);
+  EXPECT_NE(thrown.error().find(path), std::string::npos) << thrown.error();
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(dir_)) files += entry.is_regular_file();
+  EXPECT_EQ(files, 1);  // the previous summary.json only
+}
+
 TEST_F(InputFiles, AnUnwritablePathIsAnErrorAndLeavesNothing) {
   auto written = writeFileAtomically((dir_ / "no" / "such" / "f.txt").string(),
                                      [](std::ostream& out) { out << "x"; });

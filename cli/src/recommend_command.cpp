@@ -170,7 +170,7 @@ int recommendCommand(const RecommendOptions& o) {
   }
   if (!o.json_out.empty()) {
     if (auto written = writeFileAtomically(
-            o.json_out, [&](std::ostream& file) { file << out.dump(2) << '\n'; });
+            o.json_out, [&](std::ostream& file) { file << jsonText(out, 2) << '\n'; });
         !written) {
       std::cerr << "error: " << written.error() << '\n';
       return kFailure;

@@ -52,7 +52,7 @@ int report(const std::string& results, const std::string& out) {
   std::error_code error;
   std::filesystem::create_directories(out, error);
   if (auto written = writeFileAtomically(
-          manifest_path, [&](std::ostream& file) { file << manifest->dump(2) << '\n'; });
+          manifest_path, [&](std::ostream& file) { file << jsonText(*manifest, 2) << '\n'; });
       !written) {
     std::cerr << "error: --out: " << written.error() << '\n';
     return kFailure;

@@ -133,7 +133,7 @@ std::expected<void, std::string> writeModelFile(const std::string& dir, const my
     }
   }
   return writeFileAtomically((fs::path(dir) / "model.json").string(),
-                             [&](std::ostream& out) { out << j.dump(1) << '\n'; });
+                             [&](std::ostream& out) { out << jsonText(j, 1) << '\n'; });
 }
 
 }  // namespace springcheck

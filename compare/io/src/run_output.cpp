@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "compare/io/atomic_file.h"
+#include "compare/io/whole_folder.h"
 #include "compare/io/npy.h"
 #include "mysim/cloth_mesh.h"
 #include "mysim/state_hash.h"
@@ -79,13 +80,22 @@ std::expected<void, std::string> writeRunOutputs(const std::string& dir_name,
                                                  const std::string& scene_name,
                                                  const std::string& scene_file,
                                                  const mysim::RunRecord& r) {
+  if (r.frames.empty()) return std::unexpected("run recorded no frame");
+  return writeFolderWhole(dir_name, runFolderKind(), [&](const std::string& staging) {
+    return writeRunFiles(staging, model, scene_name, scene_file, r);
+  });
+}
+
+std::expected<void, std::string> writeRunFiles(const std::string& dir_name,
+                                               const mysim::Model& model,
+                                               const std::string& scene_name,
+                                               const std::string& scene_file,
+                                               const mysim::RunRecord& r) {
   const fs::path dir(dir_name);
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) return std::unexpected("cannot create " + dir.string() + ": " + ec.message());
   if (r.frames.empty()) return std::unexpected("run recorded no frame");
-  // A summary from an earlier run must not stand beside this run's half-written files.
-  fs::remove(dir / "summary.json", ec);
 
   const mysim::ParticleRows& last = r.frames.back();
   auto in = [&](const char* name) { return (dir / name).string(); };
@@ -136,7 +146,7 @@ std::expected<void, std::string> writeRunOutputs(const std::string& dir_name,
   }
 
   return writeFileAtomically(in("summary.json"), [&](std::ostream& out) {
-    out << summaryJson(model, scene_name, scene_file, r).dump(2) << '\n';
+    out << jsonText(summaryJson(model, scene_name, scene_file, r), 2) << '\n';
   });
 }
 

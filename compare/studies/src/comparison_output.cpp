@@ -1,10 +1,12 @@
 // The files of a comparison: each run's own files, one table per concern and comparison.json,
 // each written whole or not at all, from metrics computed once (compareScene).
+#include <map>
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "compare/io/atomic_file.h"
+#include "compare/io/whole_folder.h"
 #include "compare/io/csv.h"
 #include "compare/io/run_output.h"
 #include "compare/studies/comparison.h"
@@ -197,11 +199,30 @@ json comparisonJson(const Comparison& c) {
 
 }  // namespace
 
-std::expected<void, std::string> writeComparison(const std::string& dir, const Comparison& c) {
+std::expected<void, std::string> writeComparison(const std::string& out, const Comparison& c) {
+  namespace fs = std::filesystem;
+  // Two engines whose names map to one folder (mysim:backward-euler, mysim_backward-euler) would
+  // write one over the other.
+  std::map<std::string, std::string> folders;
+  for (const EngineRun& run : c.runs) {
+    auto [at, fresh] = folders.emplace(safeDirName(run.engine), run.engine);
+    if (!fresh) {
+      return std::unexpected("engines '" + at->second + "' and '" + run.engine +
+                             "' would share the folder " + at->first + " in " + out +
+                             ": compare them in two runs");
+    }
+  }
+  // The whole folder at once: an engine that failed this time leaves no folder of an earlier run.
+  return writeFolderWhole(out, comparisonFolderKind(), [&](const std::string& dir) {
+    return writeComparisonFiles(dir, c);
+  });
+}
+
+std::expected<void, std::string> writeComparisonFiles(const std::string& dir, const Comparison& c) {
   namespace fs = std::filesystem;
   for (const EngineRun& run : c.runs) {
     const std::string folder = (fs::path(dir) / safeDirName(run.engine)).string();
-    if (auto w = writeRunOutputs(folder, c.model, c.config.scene_name, c.config.source, run.record);
+    if (auto w = writeRunFiles(folder, c.model, c.config.scene_name, c.config.source, run.record);
         !w) {
       return w;
     }
@@ -216,7 +237,7 @@ std::expected<void, std::string> writeComparison(const std::string& dir, const C
   }
   const json j = comparisonJson(c);
   return writeFileAtomically(in("comparison.json"),
-                             [&](std::ostream& out) { out << j.dump(2) << '\n'; });
+                             [&](std::ostream& out) { out << jsonText(j, 2) << '\n'; });
 }
 
 }  // namespace springcheck

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "compare/io/atomic_file.h"
+
 namespace springcheck {
 namespace {
 
@@ -133,7 +135,7 @@ void writeGateJson(std::ostream& out, const GateReport& report, const std::strin
                        {"measured", r.measured ? nlohmann::json(*r.measured) : nlohmann::json()}});
   }
   const nlohmann::json all = {{"tolerances", tolerances}, {"checks", results}};
-  out << all.dump(2) << '\n';
+  out << jsonText(all, 2) << '\n';
 }
 
 }  // namespace springcheck

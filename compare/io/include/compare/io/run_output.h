@@ -15,11 +15,17 @@ namespace springcheck {
 //   times.npy         float64 (frames,): the time of each frame, s
 //   energy.csv        t,kinetic,gravity,spring,total per frame (systems with energy)
 //   final.obj         the last cloth frame as a mesh with normals (cloth scenes)
-// Each file is written under a temporary name and renamed; summary.json comes last, so a
-// directory with a summary holds a whole run.
+// The folder is written whole (whole_folder.h): every file into a staging folder that then takes
+// the folder's place, so it holds this run or the previous one, never a mix of both.
 // `scene_name` and `scene_file` name where the model came from (a RunConfig's scene_name and
 // source).
 [[nodiscard]] std::expected<void, std::string> writeRunOutputs(const std::string& dir,
+                                                               const mysim::Model& model,
+                                                               const std::string& scene_name,
+                                                               const std::string& scene_file,
+                                                               const mysim::RunRecord& record);
+// The same files into `dir` directly (a folder being staged: a comparison's engine folders).
+[[nodiscard]] std::expected<void, std::string> writeRunFiles(const std::string& dir,
                                                                const mysim::Model& model,
                                                                const std::string& scene_name,
                                                                const std::string& scene_file,

@@ -40,8 +40,13 @@ void printComparison(std::ostream& out, const Comparison& c);
 // Writes each run into dir/ENGINE/ (the `run` files), and beside them comparison.json (all
 // metrics), engine_metrics.csv, pair_metrics.csv, node_distance.csv (each run's final per-node
 // distance to the first run's) and series.csv (per frame and engine: time,
-// sag of the lowest point and the free edge, deepest penetration, total energy drift).
+// sag of the lowest point and the free edge, deepest penetration, total energy drift). The
+// folder is written whole (compare/io/whole_folder.h): this comparison or the previous one.
+// Refused: two engines whose names give one folder.
 [[nodiscard]] std::expected<void, std::string> writeComparison(const std::string& dir,
                                                                const Comparison& c);
+// The same files into `dir` directly (a staging folder).
+[[nodiscard]] std::expected<void, std::string> writeComparisonFiles(const std::string& dir,
+                                                                    const Comparison& c);
 
 }  // namespace springcheck

@@ -1,0 +1,95 @@
+#include "compare/io/whole_folder.h"
+
+#include <fcntl.h>
+#include <stdio.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+
+namespace springcheck {
+namespace fs = std::filesystem;
+namespace {
+
+// The first entry of `dir` that `kind` does not write, or "" if every one is its own.
+std::string foreignEntry(const fs::path& dir, const FolderKind& kind) {
+  std::error_code ec;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    if (e.is_directory() && !e.is_symlink() && kind.subfolders) {
+      if (std::string inner = foreignEntry(e.path(), *kind.subfolders); !inner.empty()) {
+        return name + "/" + inner;
+      }
+      continue;
+    }
+    const bool leftover_temporary = name.find(".tmp.") != std::string::npos;
+    if (!(e.is_regular_file() && !e.is_symlink() && (kind.files.count(name) || leftover_temporary))) {
+      return name;
+    }
+  }
+  return ec ? "(unreadable: " + ec.message() + ")" : "";
+}
+
+}  // namespace
+
+const FolderKind& runFolderKind() {
+  static const FolderKind kind{"run folder",
+                               {"final_state.csv", "trajectory.npy", "times.npy", "energy.csv",
+                                "final.obj", "summary.json"}};
+  return kind;
+}
+
+const FolderKind& comparisonFolderKind() {
+  static const FolderKind kind{"comparison folder",
+                               {"comparison.json", "engine_metrics.csv", "pair_metrics.csv",
+                                "node_distance.csv", "series.csv"},
+                               &runFolderKind()};
+  return kind;
+}
+
+std::expected<void, std::string> writeFolderWhole(
+    const std::string& path, const FolderKind& kind,
+    const std::function<std::expected<void, std::string>(const std::string& staging)>& body) {
+  const fs::path target = fs::path(path).lexically_normal();
+  const fs::path folder = target.filename().empty() ? target.parent_path() : target;
+  std::error_code ec;
+  const bool existed = fs::exists(fs::symlink_status(folder, ec));
+  if (existed) {
+    if (!fs::is_directory(fs::symlink_status(folder, ec))) {
+      return std::unexpected(folder.string() + ": exists and is not a folder");
+    }
+    if (std::string foreign = foreignEntry(folder, kind); !foreign.empty()) {
+      return std::unexpected(folder.string() + " holds '" + foreign + "', which a " + kind.what +
+                             " does not: springcheck replaces only its own results; give an "
+                             "empty or new folder");
+    }
+  }
+  const fs::path parent = folder.parent_path().empty() ? fs::path(".") : folder.parent_path();
+  fs::create_directories(parent, ec);
+  if (ec) return std::unexpected("cannot create " + parent.string() + ": " + ec.message());
+  static std::atomic<long> count{0};
+  const fs::path staging = parent / ("." + folder.filename().string() + ".staging." +
+                                     std::to_string(::getpid()) + "." + std::to_string(++count));
+  fs::create_directory(staging, ec);
+  if (ec) return std::unexpected("cannot create " + staging.string() + ": " + ec.message());
+  auto written = body(staging.string());
+  if (!written) {
+    fs::remove_all(staging, ec);
+    return written;
+  }
+  // Swap in one step; a plain rename where there is nothing to swap with (or it went meanwhile).
+  if (existed && renameat2(AT_FDCWD, staging.c_str(), AT_FDCWD, folder.c_str(), RENAME_EXCHANGE) == 0) {
+    fs::remove_all(staging, ec);  // now the previous run
+    return {};
+  }
+  if (std::rename(staging.c_str(), folder.c_str()) != 0) {
+    const std::string why = std::strerror(errno);
+    fs::remove_all(staging, ec);
+    return std::unexpected("cannot put " + folder.string() + " in place: " + why);
+  }
+  return {};
+}
+
+}  // namespace springcheck

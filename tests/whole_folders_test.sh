@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# A result folder holds one whole run or the previous one, never a mix:
+#   whole_folders_test.sh SPRINGCHECK SCENE
+# Two runs of different integrators into the same --out at the same moment, ten times: the folder
+# always holds one of them whole (every file equal to that integrator's own run). A folder that
+# holds a file springcheck does not write is refused, naming it, and left as it was.
+set -u
+exe=$1 scene=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+for integrator in verlet symplectic-euler; do
+  "$exe" run "$scene" --integrator "$integrator" --duration 1 --out "$work/ref_$integrator" >/dev/null \
+    || fail "reference run $integrator"
+done
+for round in $(seq 10); do
+  "$exe" run "$scene" --integrator verlet --duration 1 --out "$work/both" >/dev/null 2>&1 &
+  a=$!
+  "$exe" run "$scene" --integrator symplectic-euler --duration 1 --out "$work/both" >/dev/null 2>&1 &
+  b=$!
+  wait $a; wait $b
+  winner=$(grep -o '"integrator": "[a-z-]*"' "$work/both/summary.json" | cut -d'"' -f4)
+  [ -n "$winner" ] || fail "round $round: no summary.json"
+  for f in final_state.csv trajectory.npy times.npy energy.csv; do
+    cmp -s "$work/both/$f" "$work/ref_$winner/$f" || fail "round $round: $f is not $winner's"
+  done
+  [ -z "$(ls -A "$work" | grep staging)" ] || fail "round $round: a staging folder left"
+done
+echo "ok: 10 rounds of two runs at once, each folder one whole run"
+
+mkdir -p "$work/mine" && echo "my notes" > "$work/mine/notes.txt"
+if "$exe" run "$scene" --duration 0.2 --out "$work/mine" > "$work/log" 2>&1; then
+  fail "a folder with notes.txt was replaced"
+fi
+grep -q "notes.txt" "$work/log" || fail "the refusal does not name notes.txt: $(cat "$work/log")"
+[ "$(ls "$work/mine")" = "notes.txt" ] || fail "the user's folder changed"
+echo "ok: a folder of the user's is refused and left as it was"

@@ -3,6 +3,7 @@
 #include "compare/engines/external_engine.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <fstream>
@@ -111,6 +112,31 @@ TEST(Npy, ReadsWhatItWritesAndRefusesOtherTypes) {
   auto bad = readNpy(path.string());
   ASSERT_FALSE(bad);
   EXPECT_NE(bad.error().find("float64"), std::string::npos) << bad.error();
+  fs::remove(path);
+}
+
+// A header that claims far more values than the file holds is refused before anything is
+// allocated for them (an 8-byte file claiming 2^34 values once ran out of memory; one claiming
+// 10^8 peaked at 771 MiB), and so is a shape whose product overflows; a FIFO is not opened.
+TEST(Npy, AClaimedShapeLargerThanTheFileIsRefusedBeforeAllocating) {
+  const fs::path path = fs::temp_directory_path() / ("springcheck_npy_big_" + std::to_string(getpid()));
+  for (const std::string& shape : {"(17179869184,)", "(100000000,)", "(999999999999, 999999999999)"}) {
+    const std::string header = "{'descr': '<f8', 'fortran_order': False, 'shape': " + shape + ", }";
+    std::string bytes = std::string("\x93NUMPY\x01\x00", 8);
+    bytes += static_cast<char>(header.size());
+    bytes += '\0';
+    std::ofstream(path, std::ios::binary) << bytes << header << std::string(8, '\0');
+    auto bad = readNpy(path.string());
+    ASSERT_FALSE(bad) << shape;
+    EXPECT_TRUE(bad.error().find("shorter than its shape") != std::string::npos ||
+                bad.error().find("too large") != std::string::npos)
+        << bad.error();
+  }
+  fs::remove(path);
+  ASSERT_EQ(mkfifo(path.c_str(), 0600), 0);
+  auto fifo = readNpy(path.string());
+  ASSERT_FALSE(fifo);
+  EXPECT_NE(fifo.error().find("not a regular file"), std::string::npos) << fifo.error();
   fs::remove(path);
 }
 

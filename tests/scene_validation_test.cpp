@@ -188,6 +188,19 @@ TEST(SceneFile, InvalidJsonNamesTheFileAndPosition) {
   EXPECT_NE(parsed.error().find("line 1"), std::string::npos) << parsed.error();
 }
 
+// A scene is one JSON value: text after it (a stray brace, a second object) is refused, not
+// ignored (the first object was once taken and the rest dropped, exit 0).
+TEST(SceneFile, TextAfterTheSceneIsRefusedNamingTheFileAndPosition) {
+  const std::string scene = validCloth().dump();
+  for (const std::string& text : {scene + " }", scene + "\n" + scene, scene + " x"}) {
+    auto parsed = parseScene(text, "two.json");
+    ASSERT_FALSE(parsed) << text.substr(scene.size());
+    EXPECT_NE(parsed.error().find("two.json: not valid JSON (byte"), std::string::npos)
+        << parsed.error();
+  }
+  EXPECT_TRUE(parseScene(scene + " \n\t", "trailing_space.json"));  // white space is not text
+}
+
 // What the plain parser would take or crash on, refused as it is read, naming the field.
 TEST(SceneFile, NumberBeyondTheDoubleRangeIsRefusedNamingItsField) {
   std::string text = with(validCloth(), "/system/particle_mass"_json_pointer, 7.75).dump();

@@ -113,7 +113,7 @@ class CheckedSax final : public json::json_sax_t {
 
 std::expected<json, std::string> parseJson(const std::string& text, const std::string& source) {
   CheckedSax sax;
-  const bool ok = json::sax_parse(text, &sax, json::input_format_t::json, false);
+  const bool ok = json::sax_parse(text, &sax, json::input_format_t::json, true);  // strict: one value, nothing after it
   if (!ok) return std::unexpected(source + ": " + sax.error);
   return std::move(sax.result);
 }

@@ -1,5 +1,6 @@
 #include "compare/io/npy.h"
 
+#include <filesystem>
 #include <fstream>
 
 #include "compare/io/atomic_file.h"
@@ -62,6 +63,11 @@ std::string headerValue(const std::string& header, const std::string& key) {
 
 std::expected<NpyArray, std::string> readNpy(const std::string& path) {
   auto bad = [&](const std::string& why) { return std::unexpected(path + ": " + why); };
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {  // a FIFO would block the reader
+    return bad("not a regular file (expected a .npy file)");
+  }
+  const std::uintmax_t file_size = std::filesystem::file_size(path, ec);
   std::ifstream in(path, std::ios::binary);
   if (!in) return bad("cannot open");
   char magic[8];
@@ -107,8 +113,16 @@ std::expected<NpyArray, std::string> readNpy(const std::string& path) {
       return bad("malformed shape " + shape_text);
     }
     array.shape.push_back(std::stol(item));
-    count *= static_cast<std::size_t>(array.shape.back());
-    if (count > (std::size_t{1} << 34)) return bad("array too large");
+    const auto extent = static_cast<std::size_t>(array.shape.back());
+    if (extent != 0 && count > (std::size_t{1} << 34) / extent) return bad("array too large");
+    count *= extent;
+  }
+  // The claimed shape against the bytes the file has, before anything is allocated for it.
+  const auto data_start = static_cast<std::uintmax_t>(in.tellg());
+  if (ec || data_start > file_size || (file_size - data_start) / sizeof(double) < count) {
+    return bad("data shorter than its shape " + shape_text + " says (" +
+               std::to_string(ec ? 0 : file_size - std::min(file_size, data_start)) +
+               " bytes for " + std::to_string(count) + " values)");
   }
   array.data.resize(count);
   if (!in.read(reinterpret_cast<char*>(array.data.data()),

@@ -170,7 +170,13 @@ INSTANTIATE_TEST_SUITE_P(
                       Misbehaviour{"nan", "trajectory.npy: non-finite value in frame"},
                       Misbehaviour{"short", "declares no blow-up: the run is incomplete"},
                       Misbehaviour{"wrong-times", "times.npy: frame 1 at t"},
-                      Misbehaviour{"missing-file", "trajectory.npy: missing"}),
+                      Misbehaviour{"missing-file", "trajectory.npy: missing"},
+                      Misbehaviour{"negative-evaluations",
+                                   "derivative_evaluations: expected an integer from 0 to 2^53"},
+                      Misbehaviour{"huge-evaluations",
+                                   "derivative_evaluations: expected an integer from 0 to 2^53"},
+                      Misbehaviour{"blowup-every-frame", "but every frame was returned"},
+                      Misbehaviour{"blowup-before-start", "blowup.time: expected a time within"}),
     [](const auto& info) {
       std::string name = info.param.mode;
       std::erase(name, '-');
@@ -186,8 +192,22 @@ TEST(MisbehavingEngine, ADeclaredBlowUpIsAcceptedAsABlowUpAtItsTime) {
   ASSERT_TRUE(run->blowup);
   EXPECT_EQ(run->blowup->check, "engine");
   EXPECT_NE(run->blowup->detail.find("the test engine gave up"), std::string::npos);
-  EXPECT_GT(run->blowup->time, 0.09);
-  EXPECT_LT(run->blowup->time, 0.12);
+  // At the declared time (between two frames), not at the step after the last frame.
+  EXPECT_NEAR(run->blowup->time, run->times.back() + 0.003, 1e-12);
+}
+
+// A summary.json without the optional counts: evaluations unknown (-1, written as null), not 0,
+// and the note says the summary lacks the wall time (not that there is no summary).
+TEST(MisbehavingEngine, ASummaryWithoutCountsLeavesThemUnknown) {
+  const EngineRegistry registry = registryWith("tests/data/misbehaving_engines.json");
+  mysim::Scene chain = scene(registry, "matched/chain_hanging.json");
+  chain.duration = 0.2;
+  auto run = registry.run("no-evaluations", chain);
+  ASSERT_TRUE(run) << run.error().message;
+  EXPECT_EQ(run->counts.derivative_evaluations, -1);
+  ASSERT_FALSE(run->notes.empty());
+  EXPECT_NE(run->notes.front().find("summary.json has no wall_seconds"), std::string::npos)
+      << run->notes.front();
 }
 
 TEST(EnginesFile, MalformedEntriesAreRefusedNamingTheField) {

@@ -38,9 +38,20 @@ if mode == "short":
     times, frames = times[: len(times) // 2], frames[: len(times) // 2]
 if mode == "wrong-times":
     times = times * 1.5
-if mode == "blowup":
+if mode == "blowup":  # stops half way, declaring a time between two frames
     times, frames = times[: len(times) // 2], frames[: len(times) // 2]
-    summary["blowup"] = {"time": float(times[-1]), "reason": "the test engine gave up"}
+    summary["blowup"] = {"time": float(times[-1]) + 0.003, "reason": "the test engine gave up"}
+if mode == "negative-evaluations":
+    summary["derivative_evaluations"] = -5
+if mode == "huge-evaluations":
+    summary["derivative_evaluations"] = 2**64 - 1
+if mode == "blowup-every-frame":  # declares a blow-up but returns the whole run
+    summary["blowup"] = {"time": float(times[len(times) // 2]), "reason": "?"}
+if mode == "blowup-before-start":
+    times, frames = times[: len(times) // 2], frames[: len(times) // 2]
+    summary["blowup"] = {"time": -5.0, "reason": "?"}
+if mode == "no-evaluations":  # a summary without the optional counts
+    summary = {}
 np.save(os.path.join(out, "times.npy"), times)
 if mode != "missing-file":
     np.save(os.path.join(out, "trajectory.npy"), frames)

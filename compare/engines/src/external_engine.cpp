@@ -220,15 +220,24 @@ Engine externalEngine(const ExternalEngineSpec& spec) {
     const std::string reason = run->result.blowup_reason;
     const std::optional<double> own_seconds = run->result.wall_seconds;
     const std::optional<long> evaluations = run->result.derivative_evaluations;
+    const bool summary_present = run->result.summary_present;
     auto system = mysim::makeSystem(model, config.limits);
     ReplayStepper replay(std::move(run->result), run->plan, model.isCircle());
     mysim::RunRecord record = mysim::simulate(*system, replay, system->initialState(), config.run);
     record.integrator = spec.name;
     // The engine's own stepping time if it reported one, else the whole process's.
     record.wall_seconds = own_seconds.value_or(run->process_seconds);
-    if (!own_seconds) record.notes.push_back("wall time is the whole process's (no summary.json)");
-    if (evaluations) record.counts.derivative_evaluations = *evaluations;
+    if (!own_seconds) {
+      record.notes.push_back(summary_present
+                                 ? "wall time is the whole process's (summary.json has no wall_seconds)"
+                                 : "wall time is the whole process's (no summary.json)");
+    }
+    // Unknown, not zero, when the engine does not say (written as null; mysim/integrator.h).
+    record.counts.derivative_evaluations = evaluations.value_or(-1);
     if (record.blowup && blowup && record.blowup->check == "non-finite") {
+      // At the time the engine declared, not at the step after its last frame.
+      record.blowup->time = *blowup;
+      record.blowup->step = std::lround(*blowup / config.run.dt);
       record.blowup->check = "engine";
       record.blowup->detail = "the engine reported a blow-up at t = " + number(*blowup) + " s" +
                               (reason.empty() ? "" : ": " + reason);

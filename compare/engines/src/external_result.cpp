@@ -72,6 +72,7 @@ std::expected<ExternalResult, std::string> readExternalResult(const std::string&
       return bad("summary.json", std::string("not valid JSON: ") + e.what());
     }
     if (!s.is_object()) return bad("summary.json", "expected an object");
+    result.summary_present = true;
     if (s.contains("wall_seconds")) {
       if (!s["wall_seconds"].is_number() || !(s["wall_seconds"].get<double>() >= 0) ||
           !std::isfinite(s["wall_seconds"].get<double>())) {
@@ -80,17 +81,30 @@ std::expected<ExternalResult, std::string> readExternalResult(const std::string&
       result.wall_seconds = s["wall_seconds"].get<double>();
     }
     if (s.contains("derivative_evaluations")) {
-      if (!s["derivative_evaluations"].is_number_integer()) {
-        return bad("summary.json", "derivative_evaluations: expected an integer");
+      // A count: an integer from 0 to 2^53 (a double's exact integers; -5 or 2^64-1 is a bug).
+      const json& d = s["derivative_evaluations"];
+      constexpr long kLargest = 1L << 53;
+      if (!d.is_number_integer() || (d.is_number_unsigned() && d.get<unsigned long>() > kLargest) ||
+          (!d.is_number_unsigned() && (d.get<long>() < 0 || d.get<long>() > kLargest))) {
+        return bad("summary.json", "derivative_evaluations: expected an integer from 0 to 2^53, got " +
+                                       mysim::clip(d.dump(), 40));
       }
-      result.derivative_evaluations = s["derivative_evaluations"].get<long>();
+      result.derivative_evaluations = d.get<long>();
     }
     if (s.contains("blowup") && !s["blowup"].is_null()) {
       const json& b = s["blowup"];
       if (!b.is_object() || !b.contains("time") || !b["time"].is_number()) {
         return bad("summary.json", "blowup: expected null or {\"time\": s, \"reason\": text}");
       }
-      result.blowup_time = b["time"].get<double>();
+      // Within the run: from its start to its last frame time (the duration).
+      const double t = b["time"].get<double>();
+      if (!std::isfinite(t) || t < 0.0 || t > plan.times.back() + 1e-9 * std::max(1.0, plan.times.back())) {
+        std::ostringstream m;
+        m.precision(12);
+        m << "blowup.time: expected a time within the run, 0 to " << plan.times.back() << " s, got " << t;
+        return bad("summary.json", m.str());
+      }
+      result.blowup_time = t;
       if (b.contains("reason") && b["reason"].is_string()) {
         result.blowup_reason = b["reason"].get<std::string>();
       }
@@ -172,6 +186,12 @@ std::expected<ExternalResult, std::string> readExternalResult(const std::string&
         << " s (model.json frame_times)";
       return bad(present("times.npy") ? "times.npy" : "times.csv", m.str());
     }
+  }
+  if (frames == plan.times.size() && result.blowup_time) {
+    return bad("summary.json", "declares a blow-up at t = " + std::to_string(*result.blowup_time) +
+                                   " s but every frame was returned: either the run ended early "
+                                   "(return the frames up to the blow-up) or it did not blow up "
+                                   "(\"blowup\": null)");
   }
   if (frames < plan.times.size() && !result.blowup_time) {
     return bad("times", std::to_string(frames) + " of " + std::to_string(plan.times.size()) +

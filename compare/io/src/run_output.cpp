@@ -49,7 +49,9 @@ json summaryJson(const mysim::Model& model, const std::string& scene_name,
             {"realtime_factor", r.realtimeFactor()},
             {"accepted_steps", r.counts.accepted},
             {"rejected_steps", r.counts.rejected},
-            {"derivative_evaluations", r.counts.derivative_evaluations},
+            {"derivative_evaluations", r.counts.derivative_evaluations >= 0
+                                           ? json(r.counts.derivative_evaluations)
+                                           : json()},  // unknown: null
             {"linear_iterations", r.counts.linear_iterations},
             {"solver_failures", r.counts.solver_failures},
             {"setup_seconds", r.counts.setup_seconds},

@@ -97,7 +97,7 @@ EngineMetrics recordRun(SweepRow& row, const mysim::Model& model, const mysim::R
   row.realtime_factor = r.realtimeFactor();
   row.threads = r.threads;
   row.steps = r.steps;
-  row.derivative_evaluations = r.counts.derivative_evaluations;
+  if (r.counts.derivative_evaluations >= 0) row.derivative_evaluations = r.counts.derivative_evaluations;
   row.accepted_steps = r.counts.accepted;
   row.rejected_steps = r.counts.rejected;
   row.linear_iterations = r.counts.linear_iterations;

@@ -16,7 +16,7 @@ namespace mysim {
 struct StepCounts {
   long accepted = 0;  // accepted (sub)steps
   long rejected = 0;  // rejected trial steps (adaptive only)
-  long derivative_evaluations = 0;
+  long derivative_evaluations = 0;  // -1: unknown (an external engine that did not say)
   // Backward Euler: CG iterations; XPBD: constraint passes; local/global: global solves;
   // vertex block descent: passes over the vertices.
   long linear_iterations = 0;

@@ -57,8 +57,9 @@ FramePlan framePlan(const mysim::RunSettings& settings, bool every_step);
 struct ExternalResult {
   std::vector<double> times;
   std::vector<mysim::ParticleRows> frames;
+  bool summary_present = false;        // summary.json was there (its fields are optional)
   std::optional<double> wall_seconds;  // the engine's own stepping time, if it said
-  std::optional<long> derivative_evaluations;
+  std::optional<long> derivative_evaluations;  // if it said (a non-negative integer)
   std::optional<double> blowup_time;  // the engine stopped: it blew up then
   std::string blowup_reason;
 };

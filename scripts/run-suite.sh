@@ -32,7 +32,7 @@ for scene in chain_swing chain_hanging; do
 done
 
 for spec in compare/sweeps/*.json; do
-  $B sweep "$spec" --out "$OUT/sweep/$(basename "$spec" .json).csv"
+  $B sweep "$spec" --fresh --out "$OUT/sweep/$(basename "$spec" .json).csv"
 done
 # The answer users want, for the report's first page: the cheapest choice under 1 mm of error on
 # each sweep measured against one converged reference (exit 1 when nothing qualifies: a result).

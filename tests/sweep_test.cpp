@@ -88,6 +88,17 @@ TEST_F(SmallSweep, ResumeSkipsFinishedRuns) {
   }
 }
 
+// Resuming trusts a row only if its parameters are the case's: a table made by an edited spec
+// (other steps) is refused, naming the case and the column, instead of kept as done ("0 runs").
+TEST_F(SmallSweep, ResumeRefusesATableOfAnotherSpec) {
+  run("table.csv", {.jobs = 1}, 6);
+  spec_.dts = {0.2, 0.05, 0.025};
+  auto ran = runSweep(registry_, spec_, (dir_ / "table.csv").string(), {.jobs = 1});
+  ASSERT_FALSE(ran) << "resumed a table of another spec";
+  EXPECT_NE(ran.error().find("case 0 has dt"), std::string::npos) << ran.error();
+  EXPECT_NE(ran.error().find("--fresh"), std::string::npos) << ran.error();
+}
+
 TEST_F(SmallSweep, ShardsMergeToTheWhole) {
   const auto full = run("full.csv", {.jobs = 2}, 6);
   run("s0.csv", {.jobs = 1, .shard_index = 0, .shard_count = 2}, 3);

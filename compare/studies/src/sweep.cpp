@@ -223,6 +223,12 @@ std::string journalOf(const std::string& table) { return table + ".partial"; }
 std::expected<std::map<int, SweepRow>, std::string> rowsSoFar(const std::string& out_csv,
                                                               bool resume) {
   std::map<int, SweepRow> by_id;
+  for (const std::string& path : {out_csv, journalOf(out_csv)}) {  // a FIFO would block
+    std::error_code ec;
+    if (fs::exists(path, ec) && !fs::is_regular_file(path, ec)) {
+      return std::unexpected(path + ": not a regular file (expected a sweep table, .csv)");
+    }
+  }
   if (!resume) return by_id;
   if (fs::exists(out_csv)) {
     auto existing = readSweepTable(out_csv);
@@ -247,13 +253,30 @@ std::expected<int, std::string> runSweep(const EngineRegistry& registry, const S
                                          const std::string& out_csv, const SweepOptions& options) {
   auto so_far = rowsSoFar(out_csv, options.resume);
   if (!so_far) return std::unexpected(so_far.error());
-  std::vector<SweepRow> kept;
-  for (auto& [id, row] : *so_far) kept.push_back(std::move(row));
   std::vector<SweepCase> todo;
   for (const SweepCase& c : expandSweep(spec)) {
-    if (c.id % options.shard_count != options.shard_index || so_far->count(c.id)) continue;
+    if (c.id % options.shard_count != options.shard_index) continue;
+    if (auto done = so_far->find(c.id); done != so_far->end()) {
+      // A row is this case's only if every parameter column agrees (the table, or its journal,
+      // may come from another spec): else the table is not this sweep's.
+      SweepRow wanted;
+      wanted.c = c;
+      const auto mine = sweepRowFields(wanted), theirs = sweepRowFields(done->second);
+      for (int k = 0; k < kSweepParameterColumns; ++k) {
+        if (mine[k] != theirs[k]) {
+          return std::unexpected(out_csv + ": case " + std::to_string(c.id) + " has " +
+                                 sweepColumns()[k] + " " + theirs[k] + " in the table but " +
+                                 mine[k] + " in " + spec.source +
+                                 ": the table is another sweep's (--fresh starts it over, or "
+                                 "give another --out)");
+        }
+      }
+      continue;
+    }
     todo.push_back(c);
   }
+  std::vector<SweepRow> kept;
+  for (auto& [id, row] : *so_far) kept.push_back(std::move(row));
   const int jobs = jobCount(options.jobs, todo.size());
   auto references = runReferences(registry, spec, todo, jobs);
   if (!references) return std::unexpected(references.error());

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -137,6 +138,13 @@ std::expected<SweepRow, std::string> sweepRowFromFields(const std::vector<std::s
                              "' is not of its type");
     }
   }
+  // Distances: an error below zero is no error at all (recommend once ranked -5 first).
+  for (auto [name, value] : {std::pair{"error", row.error}, {"final_error", row.final_error}}) {
+    if (value && !(*value >= 0.0)) {
+      return std::unexpected(std::string("column ") + name + ": " + std::to_string(*value) +
+                             " is not a distance (expected >= 0)");
+    }
+  }
   return row;
 }
 
@@ -150,6 +158,10 @@ std::string sweepField(const SweepRow& row, std::string_view column) {
 std::string sweepLine(const SweepRow& row) { return csvLine(sweepRowFields(row)); }
 
 std::expected<std::vector<SweepRow>, std::string> readSweepTable(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {  // a FIFO would block the reader
+    return std::unexpected(path + ": not a regular file (expected a sweep table, .csv)");
+  }
   std::ifstream in(path);
   if (!in) return std::unexpected(path + ": cannot open");
   std::string line;

@@ -65,6 +65,17 @@ TEST_F(InputFiles, SweepSpecFieldsOfTheWrongTypeAreRefusedNamingTheField) {
   }
 }
 
+// The grid is counted before it is expanded: 120000 cases are refused at once, naming the
+// count and the bound, not expanded into gigabytes first.
+TEST_F(InputFiles, AGridOfMoreThanTheBoundIsRefusedBeforeItIsExpanded) {
+  std::string scales;
+  for (int k = 0; k < 60000; ++k) scales += (k ? "," : "") + std::to_string(1.0 + k * 1e-6);
+  const std::string path = spec(R"("integrators": ["euler", "rk4"], "dt": [0.01], "duration": 1, )"
+                                R"("reference": "closed_form", "stiffness_scale": [)" + scales + "]");
+  auto r = loadSweepSpec(path, registry_);
+  expectRefused(r, path, "the grid has 1.2e+05 cases; a spec may have at most 100000");
+}
+
 TEST_F(InputFiles, ADirectoryGivenAsAnyInputIsRefusedAsSuch) {
   auto sweep = loadSweepSpec(dir_.string(), registry_);
   ASSERT_FALSE(sweep);

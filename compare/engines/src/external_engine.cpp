@@ -26,7 +26,10 @@ EngineError failed(const std::string& message) {
 class ScratchDir {
  public:
   explicit ScratchDir(const std::string& engine) {
-    std::string pattern = (fs::temp_directory_path() / ("springcheck-" + engine + "-XXXXXX"));
+    std::error_code ec;  // TMPDIR naming no folder: no scratch (the caller says where), no throw
+    const fs::path base = fs::temp_directory_path(ec);
+    if (ec) return;
+    std::string pattern = (base / ("springcheck-" + engine + "-XXXXXX"));
     if (mkdtemp(pattern.data())) {
       path_ = pattern;
       tracked_.emplace(path_);  // removed by the interrupt handler too
@@ -149,7 +152,9 @@ std::expected<Execution, EngineError> execute(const ExternalEngineSpec& spec,
   ScratchDir scratch(spec.name);
   if (scratch.path().empty()) {
     return std::unexpected(
-        failed(who + ": cannot make a folder under " + fs::temp_directory_path().string()));
+        failed(who + ": cannot make a scratch folder under TMPDIR (" +
+               std::string(std::getenv("TMPDIR") ? std::getenv("TMPDIR") : "/tmp") +
+               "): it must name a writable folder"));
   }
   const std::string out = scratch.path() + "/out";
   fs::create_directories(out);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -16,6 +17,8 @@ using Row = std::map<std::string, std::string>;
 
 std::vector<Row> readTable(const std::string& path) {
   std::vector<Row> rows;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return rows;  // a FIFO would block
   std::ifstream in(path);
   std::string line;
   if (!std::getline(in, line)) return rows;
@@ -74,7 +77,10 @@ json momentum(const json& comparisons) {
   json list = json::array();
   for (const json& c : comparisons) {
     if (c["group"] != "suite") continue;
-    std::ifstream in(c["folder"].get<std::string>() + "/comparison.json");
+    const std::string file = c["folder"].get<std::string>() + "/comparison.json";
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec)) continue;
+    std::ifstream in(file);
     const json j = json::parse(in, nullptr, false);
     if (j.is_discarded()) continue;
     json entry = {{"scene", c["scene"]}};

@@ -64,6 +64,8 @@ std::string utcNow() {
 // The first data row's value of `column` in a CSV table ("" when absent): enough to tell a
 // self-consistency sweep from one against a shared reference.
 std::string firstValue(const fs::path& table, const std::string& column) {
+  std::error_code ec;
+  if (!fs::is_regular_file(table, ec)) return "";  // a FIFO would block
   std::ifstream in(table);
   std::string header, row;
   if (!std::getline(in, header) || !std::getline(in, row)) return "";
@@ -88,6 +90,10 @@ std::expected<json, std::string> comparisons(const fs::path& results) {
   std::ranges::sort(found);
   json list = json::array();
   for (const fs::path& dir : found) {
+    std::error_code ec;
+    if (!fs::is_regular_file(dir / "comparison.json", ec)) {  // a FIFO would block the reader
+      return std::unexpected((dir / "comparison.json").string() + ": not a regular file");
+    }
     std::ifstream in(dir / "comparison.json");
     json c = json::parse(in, nullptr, false);
     if (c.is_discarded() || !c.contains("scene") || !c.contains("engines")) {

@@ -24,6 +24,9 @@ bool multipleOf(double interval, double dt) {
 }
 
 constexpr const char* kSchema = "docs/sweeps.md";
+// Cases one spec may expand to: a day of the slowest shipped sweep's cases on 2 cores, and a
+// table of tens of megabytes. More is a mistake or a cluster's job, split into specs or shards.
+constexpr double kMaxSweepCases = 100000;
 
 // The engines (default mysim) and the integrators of those that take one (default RK4).
 void readEngines(mysim::FieldReader& top, const EngineRegistry& registry, SweepSpec& s) {
@@ -132,6 +135,21 @@ SweepSpec readSpec(const json& j, const std::string& source, EngineRegistry& reg
   readSteps(top, s);
   readReference(top, s);
   top.refuseUnknown(kSchema);
+  // The grid's size, counted before it is expanded (a 10^7-value axis once took gigabytes before
+  // the first run): at most kMaxSweepCases cases a spec.
+  double cases = 0;
+  const double adaptive_axis = s.tolerances.empty() ? 1.0 : double(s.tolerances.size());
+  for (const std::string& engine : s.engines) {
+    const bool takes = std::find(s.integrator_engines.begin(), s.integrator_engines.end(),
+                                 engine) != s.integrator_engines.end();
+    cases += takes ? double(s.integrators.size()) * adaptive_axis : 1.0;
+  }
+  cases *= double(s.scenes.size()) * double(s.stiffness_scales.size()) * double(s.dts.size());
+  if (cases > kMaxSweepCases) {
+    throw FieldError{"scenes x engines x integrators x dt x stiffness_scale x tolerance", "the grid has " + formatNumber(cases, 3) + " cases; a spec may have at "
+                           "most " + formatNumber(kMaxSweepCases, 6) + " (split it into several "
+                           "specs, or shards of one: --shard)"};
+  }
   return s;
 }
 

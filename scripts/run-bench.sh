@@ -4,7 +4,8 @@
 # setting under 1 mm of error on the hanging cloth and the cloth on the sphere, springcheck
 # recommend). Writes out/bench/, prints the table that docs/performance.md keeps, and copies it
 # to bench/results/MACHINE/ (MACHINE: $SPRINGCHECK_MACHINE, else host name and core count), one
-# folder per machine so every figure says where it came from. About 20 minutes on 2 cores.
+# folder per machine so every figure says where it came from. About 26 minutes on 2 cores (the
+# solver families' equal-accuracy sweep included).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh default springcheck springcheck_bench
@@ -17,6 +18,14 @@ build/release/cli/springcheck run scenes/seed/circle.json --out "$OUT/memory_bas
 for scene in cloth_hanging cloth_on_sphere; do
   build/release/cli/springcheck recommend "scenes/matched/$scene.json" --max-error 1e-3 --repeats 3 \
     --table "$OUT/equal_accuracy_$scene.csv" --json "$OUT/equal_accuracy_$scene.json" >/dev/null || [ $? -eq 1 ]
+done
+# The solver families at equal accuracy on finer cloths (docs/performance.md, "Solver families at
+# large steps"): 32 x 32 and 64 x 64, one case at a time; about 6 minutes on 2 cores.
+build/release/cli/springcheck sweep bench/solver_families_large.json --fresh --jobs 1 \
+  --out "$OUT/solver_families_large.csv" >/dev/null
+for bound in 1e-3 1e-2; do
+  build/release/cli/springcheck recommend "$OUT/solver_families_large.csv" --max-error "$bound" \
+    --json "$OUT/solver_families_large_$bound.json" >/dev/null || [ $? -eq 1 ]
 done
 python3 bench/summarize.py "$OUT/bench.json" "$OUT/memory/summary.json" \
   "$OUT/memory_baseline/summary.json" "$OUT/summary.csv" \

@@ -3,6 +3,7 @@
 
 #include <numbers>
 
+#include "compare/engines/engine_registry.h"
 #include "compare/metrics/closed_form.h"
 #include "compare/metrics/drape_metric.h"
 #include "compare/metrics/energy_metric.h"
@@ -104,6 +105,27 @@ TEST(EnergyMetric, DriftPerTermAndLargestRiseAboveAnEarlierLow) {
   EXPECT_DOUBLE_EQ(d.kinetic[1], 1.0);
   EXPECT_DOUBLE_EQ(d.max_abs_total, 1.25);
   EXPECT_DOUBLE_EQ(d.max_rise, 1.0);  // from -2.5 back up to -1.5
+}
+
+// The circle's energy is its mechanical twin's (r^2: 1/2 |v|^2 + 1/2 |x|^2 with v = (-y, x)).
+// Forward Euler multiplies r^2 by 1 + h^2 a step, so after n steps E = (1 + h^2)^n and the drift
+// is (E - 1) / E_ref with E_ref = max(E(0), peak kinetic E / 2): a closed form, not the zero a
+// missing energy used to read as.
+TEST(EnergyMetric, TheCircleDriftsByForwardEulersRadiusGrowth) {
+  auto circle = mysim::loadScene(std::string(SPRINGCHECK_SOURCE_DIR) + "/scenes/seed/circle.json");
+  ASSERT_TRUE(circle) << circle.error();
+  circle->integrator.name = "euler";
+  circle->duration = 2 * std::numbers::pi;  // 157 steps of 0.04 s
+  const auto run = EngineRegistry().run("mysim", *circle);
+  ASSERT_TRUE(run) << run.error().message;
+  const EngineMetrics m = engineMetrics(mysim::buildModel(*circle), EngineRun{"mysim", *run});
+  const double grown = std::pow(1.0 + 0.04 * 0.04, static_cast<double>(run->steps));
+  ASSERT_TRUE(metricValue(m, "energy_drift_max"));
+  EXPECT_NEAR(*metricValue(m, "energy_drift_max"), (grown - 1.0) / std::max(1.0, grown / 2),
+              1e-12);
+  // A run that recorded no energy has no drift: not applicable, not 0.
+  EXPECT_FALSE(metricValue(EngineMetrics{}, "energy_drift_max"));
+  EXPECT_FALSE(metricValue(EngineMetrics{}, "energy_rise"));
 }
 
 TEST(ClosedForm, EllipticKKnownValues) {

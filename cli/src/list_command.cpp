@@ -5,6 +5,7 @@
 
 #include "commands.h"
 #include "compare/io/scene_files.h"
+#include "compare/metrics/run_metrics.h"
 
 namespace springcheck {
 namespace {
@@ -39,6 +40,11 @@ int listAll(const ListOptions& o) {
       std::cout << "      integrator." << p.name << " (default " << p.fallback << "): " << p.meaning
                 << '\n';
     }
+  }
+  std::cout << "Metrics (for tolerances files' checks; docs/external-engines.md):\n";
+  for (const MetricInfo& m : metricCatalog()) {
+    std::cout << "  " << m.name << "  [" << m.unit << ", " << (m.pair ? "two engines" : "one engine")
+              << "] " << m.description << '\n';
   }
   std::cout << "Engines:\n";
   for (const Engine& e : registry->engines()) {

@@ -21,6 +21,11 @@ std::optional<OdeSystem::Unhealthy> CircleSystem::checkHealth(const State& state
   return std::nullopt;
 }
 
+std::optional<EnergyTerms> CircleSystem::energy(const State& state) const {
+  const double half_r2 = 0.5 * state.y.squaredNorm();
+  return EnergyTerms{.kinetic = half_r2, .gravity = 0.0, .spring = half_r2};
+}
+
 Eigen::Matrix<double, Eigen::Dynamic, 6> CircleSystem::particleRows(const State& state) {
   Eigen::Matrix<double, Eigen::Dynamic, 6> rows(1, 6);
   rows << state.y[0], state.y[1], 0.0, -state.y[1], state.y[0], 0.0;

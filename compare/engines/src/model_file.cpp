@@ -8,6 +8,7 @@
 #include "compare/io/atomic_file.h"
 #include "compare/io/npy.h"
 #include "mysim/circle_system.h"
+#include "mysim/particle_system.h"
 #include "mysim/wind.h"
 
 namespace springcheck {
@@ -45,9 +46,13 @@ std::expected<void, std::string> writeModelFile(const std::string& dir, const my
                                                 const RunConfig& config, const FramePlan& frames) {
   const mysim::Model model = given.isCircle() ? mysim::circleTwin(given) : given;
   const int n = model.particleCount();
+  // The start state as mysim starts from it: the after-step rule applied once at t = 0 (pinned
+  // particles carry their prescribed velocity, contacts resolved), so an engine that simply
+  // starts from the file starts where mysim does.
+  const mysim::State start = mysim::ParticleSystem(model, {}).initialState();
   json particles = {{"count", n},
-                    {"position", rows3(model.start_position)},
-                    {"velocity", rows3(model.start_velocity)},
+                    {"position", rows3(start.y.head(3 * n))},
+                    {"velocity", rows3(start.y.tail(3 * n))},
                     {"mass", std::vector<double>(model.mass.data(), model.mass.data() + n)},
                     {"pinned", json::array()}};
   for (char pinned : model.pinned) particles["pinned"].push_back(pinned != 0);

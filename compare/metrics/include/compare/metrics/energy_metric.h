@@ -17,6 +17,8 @@ struct EnergyDrift {
   // integrator's own error, whatever drives it.
   double max_rise = 0.0;
 };
+// A run without energies (none recorded) gives empty series: its drift metrics are not
+// applicable (null), never a zero that reads as perfect conservation.
 EnergyDrift energyDrift(const std::vector<mysim::EnergyTerms>& energies);
 
 }  // namespace springcheck

@@ -77,6 +77,17 @@ def collect(rows, x_column):
     return series, variants
 
 
+def draw_precision_floors(ax, rows):
+    """A float32 engine's precision floor (the sweep's precision_floor column) as a dotted line:
+    below it an error is that engine's round-off, not integration error."""
+    floors = defaultdict(float)
+    for r in rows:
+        if number(r.get("precision_floor")):
+            floors[label_of(r)] = max(floors[label_of(r)], number(r["precision_floor"]))
+    for label, floor in sorted(floors.items()):
+        ax.axhline(floor, ls=":", color="black", lw=1.2, label=f"float32 floor of {label}")
+
+
 def speed_accuracy_page(sweep):
     def draw(fig, ctx):
         rows = read_csv(sweep["path"])
@@ -98,6 +109,7 @@ def speed_accuracy_page(sweep):
                 ax.text(0.5, 0.5, "no run finished", ha="center", transform=ax.transAxes)
                 continue
             notes += draw_series(ax, series, variants, ctx)
+            draw_precision_floors(ax, part)
             front = pareto([p for pts in series.values() for p in pts])
             ax.step(*zip(*front), where="post", color="black", lw=2.2, alpha=0.5, label="Pareto front")
             ax.set_xlabel("wall time of the stepping, fastest of the repeats [s]")
@@ -133,6 +145,7 @@ def convergence_page(sweep):
                 ax.text(0.5, 0.5, "no run finished", ha="center", transform=ax.transAxes)
                 continue
             notes += draw_series(ax, series, variants, ctx)
+            draw_precision_floors(ax, part)
             dts = sorted({p[0] for pts in series.values() for p in pts})
             errors = [p[1] for pts in series.values() for p in pts]
             anchor = math.exp(np.mean(np.log(errors)))

@@ -282,6 +282,50 @@ TEST(MisbehavingEngine, ASummaryWithoutCountsLeavesThemUnknown) {
       << run->notes.front();
 }
 
+// An engine that declares single precision carries its floor (half an ulp of float at the run's
+// largest coordinate) and says so; its distance from mysim's double-precision run of the same
+// algorithm is float round-off: above a tenth of the floor, below a hundred floors.
+TEST(DeclaredEngine, AFloat32EngineCarriesItsPrecisionFloorAndSaysSo) {
+  const EngineRegistry registry = registryWith("tests/data/declared_engines.json");
+  mysim::Scene cloth = scene(registry, "matched/cloth_hanging.json");
+  cloth.duration = 0.5;
+  auto single = registry.run("pysim-float32", cloth);
+  auto own = registry.run("mysim:symplectic-euler", cloth);
+  ASSERT_TRUE(single) << single.error().message;
+  ASSERT_TRUE(own) << own.error().message;
+  // The 1 m cloth's largest coordinate is 1 m at a pinned corner, and the sagging cloth
+  // stretches by less than 10 %: the floor is 2^-24 m to 1.1 times that.
+  EXPECT_GE(single->precision_floor, std::ldexp(1.0, -24));
+  EXPECT_LE(single->precision_floor, 1.1 * std::ldexp(1.0, -24));
+  EXPECT_EQ(own->precision_floor, 0.0);
+  bool said = false;
+  for (const std::string& n : single->notes) said |= n.find("single precision") != std::string::npos;
+  EXPECT_TRUE(said);
+  const double apart =
+      nodeDistance(single->frames.back().leftCols<3>(), own->frames.back().leftCols<3>()).max;
+  EXPECT_GT(apart, 0.1 * single->precision_floor);
+  EXPECT_LT(apart, 100 * single->precision_floor);
+}
+
+// Forces declared independent of time: a scene with wind or driven pins is refused, naming the
+// declaration and the scene's field; a scene without either runs.
+TEST(DeclaredEngine, ForcesThatIgnoreTimeRefuseWindAndDrivenPins) {
+  const EngineRegistry registry = registryWith("tests/data/declared_engines.json");
+  for (const auto& [name, field] : {std::pair{"matched/cloth_in_wind.json", "forces.wind"},
+                                    {"matched/cloth_driven.json", "forces.pin_motion"}}) {
+    auto run = registry.run("pysim-static", scene(registry, name));
+    ASSERT_FALSE(run) << name;
+    EXPECT_EQ(run.error().kind, EngineError::Kind::Refused);
+    EXPECT_NE(run.error().message.find("time_dependent_forces: false"), std::string::npos)
+        << run.error().message;
+    EXPECT_NE(run.error().message.find(field), std::string::npos) << run.error().message;
+  }
+  mysim::Scene chain = scene(registry, "matched/chain_hanging.json");
+  chain.duration = 0.2;
+  auto run = registry.run("pysim-static", chain);
+  EXPECT_TRUE(run) << run.error().message;
+}
+
 TEST(EnginesFile, MalformedEntriesAreRefusedNamingTheField) {
   const fs::path path =
       fs::temp_directory_path() / ("springcheck_engines_" + std::to_string(getpid()) + ".json");
@@ -297,6 +341,10 @@ TEST(EnginesFile, MalformedEntriesAreRefusedNamingTheField) {
             "engines[0].time_limit"},
            {R"({"engines": [{"name": "a", "command": ["x"], "speed": 2}]})", "engines[0].speed"},
            {R"({"engines": [{"name": "mysim", "command": ["x"]}]})", "is taken"},
+           {R"({"engines": [{"name": "a", "command": ["x"], "precision": "float16"}]})",
+            "engines[0].precision"},
+           {R"({"engines": [{"name": "a", "command": ["x"], "time_dependent_forces": "no"}]})",
+            "engines[0].time_dependent_forces"},
        }) {
     std::ofstream(path) << c.text;
     EngineRegistry registry;

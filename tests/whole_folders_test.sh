@@ -35,3 +35,19 @@ fi
 grep -q "notes.txt" "$work/log" || fail "the refusal does not name notes.txt: $(cat "$work/log")"
 [ "$(ls "$work/mine")" = "notes.txt" ] || fail "the user's folder changed"
 echo "ok: a folder of the user's is refused and left as it was"
+
+# A write that fails for want of space (a file-size limit stands in for a full disk: the write
+# fails with EFBIG as it would with ENOSPC): the run fails naming the file, the folder keeps the
+# previous run whole, and no staging folder is left.
+"$exe" run "$scene" --duration 1 --out "$work/full" >/dev/null || fail "first run into full"
+cp -r "$work/full" "$work/full_before"
+if (trap '' XFSZ; ulimit -f 40; "$exe" run "$scene" --integrator verlet --duration 1 \
+      --out "$work/full") > "$work/full_log" 2>&1; then
+  fail "a run whose write failed exited 0"
+fi
+grep -q "cannot write $work/full/trajectory.npy" "$work/full_log" \
+  || fail "the failed write is not named: $(cat "$work/full_log")"
+grep -q "keeps its previous results" "$work/full_log" || fail "no word on the folder: $(cat "$work/full_log")"
+diff -r "$work/full" "$work/full_before" >/dev/null || fail "the previous results changed"
+[ -z "$(ls -A "$work" | grep staging)" ] || fail "a staging folder left after the failed write"
+echo "ok: a write that fails mid-run leaves the previous results whole and says so"

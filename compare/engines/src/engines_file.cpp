@@ -65,6 +65,11 @@ ExternalEngineSpec readEntry(mysim::FieldReader& r) {
     }
   }
   spec.time_limit = r.positive("time_limit", spec.time_limit);
+  spec.precision = r.text("precision", spec.precision);
+  if (spec.precision != "float64" && spec.precision != "float32") {
+    mysim::failField(r.field("precision"), "\"float64\" or \"float32\"", r.raw("precision"));
+  }
+  spec.time_dependent_forces = r.boolean("time_dependent_forces", spec.time_dependent_forces);
   r.refuseUnknown(kSchema);
   return spec;
 }

@@ -209,6 +209,38 @@ std::expected<Execution, EngineError> execute(const ExternalEngineSpec& spec,
   return run;
 }
 
+// What the engine declared of itself against what the scene needs: forces that ignore time
+// cannot take wind or driven pins, so such a scene is refused, naming both sides.
+std::optional<EngineError> refusal(const ExternalEngineSpec& spec, const mysim::Model& model,
+                                   const RunConfig& config) {
+  if (spec.time_dependent_forces) return std::nullopt;
+  const char* driver = model.wind         ? "wind (forces.wind)"
+                       : model.pin_motion ? "driven pins (forces.pin_motion)"
+                                          : nullptr;
+  if (!driver) return std::nullopt;
+  return EngineError{EngineError::Kind::Refused,
+                     "engine '" + spec.name +
+                         "' declares forces that do not depend on time (time_dependent_forces: "
+                         "false in " + spec.source + "); " + config.source + " has " + driver +
+                         ", whose force changes with time"};
+}
+
+// A single-precision engine's floor: half an ulp of float (2^-24 relative) at the largest
+// coordinate the run reached. Its round-off grows from there with the steps, so this is the
+// least distance it can be from a double-precision answer, not the most.
+void declarePrecision(const ExternalEngineSpec& spec, mysim::RunRecord& record) {
+  if (spec.precision != "float32") return;
+  double largest = 0.0;
+  for (const mysim::ParticleRows& f : record.frames) {
+    largest = std::max(largest, f.leftCols<3>().cwiseAbs().maxCoeff());
+  }
+  record.precision_floor = std::ldexp(largest, -24);
+  record.notes.push_back("computes in single precision (precision: float32 in " + spec.source +
+                         "): positions carry round-off of at least " +
+                         formatNumber(record.precision_floor, 2) +
+                         " m here, so a distance near that is its precision, not integration error");
+}
+
 }  // namespace
 
 Engine externalEngine(const ExternalEngineSpec& spec) {
@@ -219,6 +251,7 @@ Engine externalEngine(const ExternalEngineSpec& spec) {
       (spec.description.empty() ? "a user's engine" : spec.description) + " (" + spec.source + ")";
   e.run = [spec](const mysim::Model& model,
                  const RunConfig& config) -> std::expected<mysim::RunRecord, EngineError> {
+    if (auto refused = refusal(spec, model, config)) return std::unexpected(*refused);
     auto run = execute(spec, model, config, false);
     if (!run) return std::unexpected(run.error());
     const std::optional<double> blowup = run->result.blowup_time;
@@ -239,6 +272,7 @@ Engine externalEngine(const ExternalEngineSpec& spec) {
     }
     // Unknown, not zero, when the engine does not say (written as null; mysim/integrator.h).
     record.counts.derivative_evaluations = evaluations.value_or(-1);
+    declarePrecision(spec, record);
     if (record.blowup && blowup && record.blowup->check == "non-finite") {
       // At the time the engine declared, not at the step after its last frame.
       record.blowup->time = *blowup;
@@ -252,6 +286,7 @@ Engine externalEngine(const ExternalEngineSpec& spec) {
   e.build = [spec](const mysim::Model& model,
                    const RunConfig& config) -> std::expected<EngineInstance, EngineError> {
     // Interactive use: the whole run at every step, then played back step by step.
+    if (auto refused = refusal(spec, model, config)) return std::unexpected(*refused);
     auto run = execute(spec, model, config, true);
     if (!run) return std::unexpected(run.error());
     EngineInstance instance;

@@ -62,6 +62,8 @@ json summaryJson(const mysim::Model& model, const std::string& scene_name,
             {"final_state_hash", r.frames.empty() ? "" : mysim::hashRows(r.frames.back())},
             {"notes", r.notes},
             {"peak_resident_bytes", peakResidentBytes()}};
+  // Only for engines that declared single precision (docs/external-engines.md).
+  s["precision_floor"] = r.precision_floor > 0 ? json(r.precision_floor) : json();
   s["energy_start"] = r.energies.empty() ? json() : energyJson(r.energies.front());
   s["energy_end"] = r.energies.empty() ? json() : energyJson(r.energies.back());
   if (r.blowup) {

@@ -77,7 +77,13 @@ std::expected<void, std::string> writeFolderWhole(
   auto written = body(staging.string());
   if (!written) {
     fs::remove_all(staging, ec);
-    return written;
+    // Named as the user knows it (the staging folder is gone), and what became of the folder.
+    std::string message = written.error();
+    for (std::size_t at; (at = message.find(staging.string())) != std::string::npos;) {
+      message.replace(at, staging.string().size(), folder.string());
+    }
+    return std::unexpected(message + "; " + folder.string() +
+                           (existed ? " keeps its previous results" : " was not created"));
   }
   // Swap in one step; a plain rename where there is nothing to swap with (or it went meanwhile).
   if (existed && renameat2(AT_FDCWD, staging.c_str(), AT_FDCWD, folder.c_str(), RENAME_EXCHANGE) == 0) {

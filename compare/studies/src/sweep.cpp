@@ -102,6 +102,7 @@ EngineMetrics recordRun(SweepRow& row, const mysim::Model& model, const mysim::R
   row.rejected_steps = r.counts.rejected;
   row.linear_iterations = r.counts.linear_iterations;
   row.setup_seconds = r.counts.setup_seconds;
+  if (r.precision_floor > 0) row.precision_floor = r.precision_floor;
   EngineMetrics metrics = engineMetrics(model, {row.c.engine, r});
   if (!r.energies.empty()) {
     row.energy_drift_max = metricValue(metrics, "energy_drift_max");
@@ -112,6 +113,14 @@ EngineMetrics recordRun(SweepRow& row, const mysim::Model& model, const mysim::R
   row.angular_momentum_drift = metricValue(metrics, "angular_momentum_drift");
   for (const std::string& n : r.notes) addNote(row, n);
   return metrics;
+}
+
+// A float32 engine's error within ten times its floor is its round-off (grown over the steps),
+// not integration error: say so where the number is read.
+void notePrecisionFloor(SweepRow& row) {
+  if (row.error && row.precision_floor && *row.error < 10 * *row.precision_floor) {
+    addNote(row, "error within 10x the float32 precision floor: round-off, not integration error");
+  }
 }
 
 // The case's error against the spec's reference: the closed form, or its reference run.
@@ -164,6 +173,7 @@ SweepRow runCase(const EngineRegistry& registry, const SweepSpec& spec, const Sw
   }
   const EngineMetrics metrics = recordRun(row, run->model, *record);
   if (!record->blowup) measureError(row, spec, metrics, *record, references);  // else meaningless
+  notePrecisionFloor(row);
   if (options.repeats > 1) kept = std::move(*run);  // for the timing rounds
   return row;
 }

@@ -97,6 +97,7 @@ const std::vector<Column>& columns() {
       text("reference", &R::reference),
       optional("error", &R::error),
       optional("final_error", &R::final_error),
+      optional("precision_floor", &R::precision_floor),
       optional("energy_drift_max", &R::energy_drift_max),
       optional("energy_rise", &R::energy_rise),
       optional("max_strain", &R::max_strain),

@@ -30,6 +30,9 @@ struct RunRecord {
   std::vector<EnergyTerms> energies;  // (F) where the system has energy
   std::optional<BlowUp> blowup;
   std::vector<std::string> notes;  // how the engine differs from the scene as written, if at all
+  // For an engine that computes in single precision: half an ulp of float at the run's largest
+  // coordinate, m. No such engine can be closer than this to anything; 0 for double engines.
+  double precision_floor = 0.0;
 
   // "ok"; "blowup" (a health check failed); "step-limit" (an adaptive integrator stopped the run,
   // unable to meet its tolerance); "solver-not-converged" (the run is complete, but some linear

@@ -17,6 +17,11 @@ struct ExternalEngineSpec {
   // {env:NAME}, and {{ }} for literal braces.
   std::vector<std::string> command;
   double time_limit = 600.0;  // s, for one run
+  // What the engine declares of itself: the floating-point type it steps in ("float64" or
+  // "float32"), and whether its forces may depend on time (false: it cannot take wind or driven
+  // pins, and refuses such scenes instead of running them wrong).
+  std::string precision = "float64";
+  bool time_dependent_forces = true;
   std::string source;         // the engines file, for messages
   std::string dir;            // its folder: {dir}, and relative programs resolve against it
 };

@@ -36,6 +36,7 @@ struct SweepRow {
   std::optional<double> setup_seconds;  // one-time set-up inside the steps (a factorisation)
   std::string reference;                     // what `error` is measured against
   std::optional<double> error, final_error;  // m (or relative, for a closed form's quantity)
+  std::optional<double> precision_floor;     // m: a float32 engine's least round-off (empty: double)
   std::optional<double> energy_drift_max, energy_rise, max_strain;
   std::optional<double> linear_momentum_drift, angular_momentum_drift;
   std::string note;

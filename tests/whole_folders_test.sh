@@ -51,3 +51,13 @@ grep -q "keeps its previous results" "$work/full_log" || fail "no word on the fo
 diff -r "$work/full" "$work/full_before" >/dev/null || fail "the previous results changed"
 [ -z "$(ls -A "$work" | grep staging)" ] || fail "a staging folder left after the failed write"
 echo "ok: a write that fails mid-run leaves the previous results whole and says so"
+
+# A staging folder left by a springcheck that died mid-write (its pid gone) is removed by the
+# next write beside it; one of a live process is left alone.
+sleep 0 & dead=$!; wait "$dead"  # reaped: no process has this pid now
+mkdir -p "$work/.full.staging.$dead.1" "$work/.full.staging.$$.1"
+echo half > "$work/.full.staging.$dead.1/trajectory.npy"
+"$exe" run "$scene" --duration 0.2 --out "$work/full" >/dev/null || fail "run beside a dead staging folder"
+[ ! -e "$work/.full.staging.$dead.1" ] || fail "a dead run's staging folder was left"
+[ -d "$work/.full.staging.$$.1" ] || fail "a live process's staging folder was removed"
+echo "ok: a dead run's staging folder is cleared by the next write"

@@ -1,11 +1,13 @@
 #include "compare/io/whole_folder.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <stdio.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 
@@ -30,6 +32,24 @@ std::string foreignEntry(const fs::path& dir, const FolderKind& kind) {
     }
   }
   return ec ? "(unreadable: " + ec.message() + ")" : "";
+}
+
+// Staging folders of `folder` left by a springcheck that died mid-write (SIGKILL, a power cut):
+// named ".NAME.staging.PID.N" beside it, with no live process PID. Removed, so a result folder's
+// parent never fills with halves of runs.
+void removeDeadStaging(const fs::path& parent, const std::string& name) {
+  const std::string prefix = "." + name + ".staging.";
+  std::error_code ec;
+  std::vector<fs::path> dead;
+  for (const fs::directory_entry& e : fs::directory_iterator(parent, ec)) {
+    const std::string entry = e.path().filename().string();
+    if (!entry.starts_with(prefix) || !e.is_directory() || e.is_symlink()) continue;
+    char* end = nullptr;
+    const long pid = std::strtol(entry.c_str() + prefix.size(), &end, 10);
+    if (pid <= 0 || end == nullptr || *end != '.') continue;
+    if (::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) dead.push_back(e.path());
+  }
+  for (const fs::path& d : dead) fs::remove_all(d, ec);
 }
 
 }  // namespace
@@ -69,6 +89,7 @@ std::expected<void, std::string> writeFolderWhole(
   const fs::path parent = folder.parent_path().empty() ? fs::path(".") : folder.parent_path();
   fs::create_directories(parent, ec);
   if (ec) return std::unexpected("cannot create " + parent.string() + ": " + ec.message());
+  removeDeadStaging(parent, folder.filename().string());
   static std::atomic<long> count{0};
   const fs::path staging = parent / ("." + folder.filename().string() + ".staging." +
                                      std::to_string(::getpid()) + "." + std::to_string(++count));

@@ -1,7 +1,7 @@
 # Installing springcheck (docs/install.md). An install holds:
 #   bin/springcheck
 #   share/springcheck/{reports,scenes,examples,compare/tolerances.json,compare/sweeps}
-#   share/man/man1/springcheck.1, share/bash-completion/completions/springcheck
+#   share/man/man1/springcheck.1.gz, share/bash-completion/completions/springcheck
 #   lib/libspringcheck_*.a, include/{mysim,reference,compare}/
 #   lib/cmake/springcheck/springcheckConfig.cmake (+ version and targets files)
 # The executable finds its data at ../share/springcheck from its own folder (cli/src/
@@ -35,7 +35,7 @@ foreach(_file IN LISTS SPRINGCHECK_DATA_FILES)
   install(FILES ${PROJECT_SOURCE_DIR}/${_file} DESTINATION ${SPRINGCHECK_INSTALL_DATADIR}/${_parent})
 endforeach()
 if(TARGET springcheck_man)
-  install(FILES ${PROJECT_BINARY_DIR}/cli/springcheck.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
+  install(FILES ${PROJECT_BINARY_DIR}/cli/springcheck.1.gz DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
 endif()
 install(FILES ${PROJECT_BINARY_DIR}/cli/springcheck.bash
         DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions RENAME springcheck)

@@ -18,7 +18,7 @@ fail() { echo "FAIL: $*"; exit 1; }
 # Every default path lies inside the prefix, not in the source or build tree.
 "$exe" gate --help | grep -qF "$data/compare/tolerances.json" || fail "gate's default tolerances are not $data/compare/tolerances.json"
 "$exe" suite --help | grep -qF "$data/scenes" || fail "suite's default scene folder is not $data/scenes"
-[ -s "$prefix/share/man/man1/springcheck.1" ] || fail "no installed man page"
+[ -s "$prefix/share/man/man1/springcheck.1.gz" ] || fail "no installed man page"
 bash -c "source '$prefix/share/bash-completion/completions/springcheck' && complete -p springcheck" >/dev/null \
   || fail "the installed completion does not register springcheck"
 

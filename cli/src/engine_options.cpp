@@ -1,6 +1,7 @@
 #include <iostream>
 
 #include "commands.h"
+#include "data_dir.h"
 
 namespace springcheck {
 
@@ -13,6 +14,7 @@ void addEnginesFileOption(CLI::App* command, std::vector<std::string>& files) {
 
 std::optional<EngineRegistry> makeRegistry(const std::vector<std::string>& files) {
   EngineRegistry registry;
+  registry.setShippedScenes(dataFile("scenes"));
   for (const std::string& file : files) {
     if (auto added = registry.addEnginesFile(file); !added) {
       std::cerr << "error: --engines-file: " << added.error() << '\n';

@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   springcheck::addStabilityCommand(app, exit_code);
   springcheck::addRecommendCommand(app, exit_code);
   springcheck::addReportCommand(app, exit_code);
+  springcheck::addEngineCommand(app, exit_code);
 #ifdef SPRINGCHECK_HAS_VIEWER
   springcheck::addViewCommand(app, exit_code);
 #endif

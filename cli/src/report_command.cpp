@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "commands.h"
+#include "compare/engines/python_interpreter.h"
 #include "compare/io/atomic_file.h"
 #include "compare/io/report_manifest.h"
 #include "data_dir.h"
@@ -15,15 +16,16 @@ namespace springcheck {
 namespace {
 
 // Writes the manifest of what the results folder holds (compare/report_manifest.h), then runs
-// reports/make_report.py (found beside the executable, data_dir.h) on it with the interpreter
-// CMake found to have matplotlib: C++ writes and finds the tables, Python only draws them.
+// reports/make_report.py (found beside the executable, data_dir.h) on it with a python3 that has
+// matplotlib, found now (python_interpreter.h): C++ writes and finds the tables, Python only
+// draws them.
 int report(const std::string& results, const std::string& out) {
-  const std::string python = SPRINGCHECK_PYTHON;
-  if (python.empty()) {
-    std::cerr << "error: no python3 with matplotlib and numpy was found when springcheck was "
-                 "configured; install python3-matplotlib python3-numpy and re-run cmake\n";
+  const auto found = findPython({"numpy", "matplotlib"});
+  if (!found) {
+    std::cerr << "error: springcheck report draws with matplotlib: " << found.error() << '\n';
     return kFailure;
   }
+  const std::string& python = *found;
   const std::string script = dataFile("reports/make_report.py");
   if (access(script.c_str(), R_OK) != 0) {
     std::cerr << "error: the report script " << script

@@ -1,6 +1,7 @@
 #include "compare/engines/engine_registry.h"
 
 #include <algorithm>
+#include <filesystem>
 
 #include "compare/engines/external_engine.h"
 #include "mysim/run_limits.h"
@@ -96,6 +97,29 @@ const Engine* EngineRegistry::find(const std::string& name) const {
     if (e.name == name) return &e;
   }
   return nullptr;
+}
+
+std::expected<std::string, std::string> EngineRegistry::shippedScene(const std::string& name) const {
+  namespace fs = std::filesystem;
+  if (shipped_scenes_.empty()) return std::unexpected("no shipped scenes folder is known here");
+  std::vector<std::string> found, names;
+  std::error_code ec;
+  for (auto it = fs::recursive_directory_iterator(shipped_scenes_, ec);
+       !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+    if (!it->is_regular_file() || it->path().extension() != ".json") continue;
+    names.push_back(it->path().stem().string());
+    if (it->path().stem() == name) found.push_back(it->path().lexically_normal().string());
+  }
+  if (found.size() == 1) return found.front();
+  std::sort(names.begin(), names.end());
+  std::string list;
+  for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+  if (found.empty()) {
+    return std::unexpected("no shipped scene named '" + mysim::clip(name, 40) + "' in " +
+                           shipped_scenes_ + " (shipped: " + list + ")");
+  }
+  return std::unexpected("'" + name + "' names " + std::to_string(found.size()) +
+                         " shipped scenes; give the path");
 }
 
 std::expected<mysim::Scene, std::string> EngineRegistry::loadScene(const std::string& path) const {

@@ -8,6 +8,7 @@
 
 #include "compare/engines/engine_registry.h"
 #include "compare/engines/interrupts.h"
+#include "compare/engines/python_interpreter.h"
 #include "compare/io/text_format.h"
 #include "mysim/circle_system.h"
 #include "process.h"
@@ -164,11 +165,20 @@ std::expected<Execution, EngineError> execute(const ExternalEngineSpec& spec,
   if (auto written = writeModelFile(scratch.path(), model, config, run.plan); !written) {
     return std::unexpected(failed(who + ": " + written.error()));
   }
+  // {python}: found now, on this machine, only if the command asks for it.
+  std::string python = "python3";
+  for (const std::string& arg : spec.command) {
+    if (arg.find("{python}") == std::string::npos) continue;
+    auto found = findPython({"numpy"});
+    if (!found) return std::unexpected(failed(who + ": {python} in " + spec.source + ": " + found.error()));
+    python = *found;
+    break;
+  }
   const std::vector<std::pair<std::string, std::string>> values = {
       {"{model}", scratch.path() + "/model.json"},
       {"{out}", out},
       {"{dir}", spec.dir},
-      {"{python}", std::string(SPRINGCHECK_PYTHON).empty() ? "python3" : SPRINGCHECK_PYTHON},
+      {"{python}", python},
       {"{dt}", number(config.run.dt)},
       {"{duration}", number(config.run.duration)},
       {"{integrator}", config.integrator.name},

@@ -19,7 +19,17 @@ constexpr const char* kSchema = "docs/compare.md";
 ToleranceCheck readCheck(FieldReader& r, const fs::path& root, const EngineRegistry& registry,
                          std::map<std::string, mysim::Scene>& scenes) {
   ToleranceCheck c;
-  c.scene = (root / r.text("scene")).lexically_normal().string();
+  // A path relative to scene_root, or a shipped scene by name ("chain_hanging": no folder, no
+  // .json), found wherever springcheck is installed.
+  const std::string given = r.text("scene");
+  const bool by_name = !given.empty() && given.find('/') == std::string::npos && !given.ends_with(".json");
+  if (by_name) {
+    auto shipped = registry.shippedScene(given);
+    if (!shipped) throw FieldError{r.field("scene"), shipped.error()};
+    c.scene = *shipped;
+  } else {
+    c.scene = (root / given).lexically_normal().string();
+  }
   if (!scenes.count(c.scene)) {  // each scene file read once, however many checks name it
     auto scene = registry.loadScene(c.scene);
     if (!scene) throw FieldError{r.field("scene"), "unknown scene: " + scene.error()};

@@ -106,6 +106,12 @@ class EngineRegistry {
   const std::vector<mysim::EngineSection>& sceneSections() const { return sections_; }
   [[nodiscard]] std::expected<mysim::Scene, std::string> loadScene(const std::string& path) const;
 
+  // The folder of the scenes springcheck ships (the CLI sets it to its data folder's scenes/),
+  // and a shipped scene by name ("chain_hanging": the one NAME.json under it), so tolerances
+  // files name the matched scenes wherever springcheck is installed. An error lists the names.
+  void setShippedScenes(std::string folder) { shipped_scenes_ = std::move(folder); }
+  [[nodiscard]] std::expected<std::string, std::string> shippedScene(const std::string& name) const;
+
   // Whether `spec` names an engine: a registered name, or "mysim:INTEGRATOR".
   [[nodiscard]] std::expected<void, std::string> check(const std::string& spec) const;
   [[nodiscard]] std::expected<EngineInstance, EngineError> build(const std::string& spec,
@@ -126,6 +132,7 @@ class EngineRegistry {
   std::vector<Engine> engines_;
   std::vector<mysim::EngineSection> sections_;
   std::vector<std::string> engines_files_;
+  std::string shipped_scenes_;
 };
 
 // The wall times of identical runs: the fastest and the median (of at least one).

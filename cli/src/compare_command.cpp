@@ -13,6 +13,8 @@ struct CompareOptions {
   std::string scene_path;
   std::string engines;  // empty: every engine of the registry
   std::string out;
+  double dt = 0.0, duration = 0.0;  // 0: the scene's
+  bool obj_frames = false;
   std::vector<std::string> engines_files;
   Timing timing;
 };
@@ -25,6 +27,8 @@ int compare(const CompareOptions& o) {
     std::cerr << "error: " << scene.error() << '\n';
     return kBadInput;
   }
+  if (o.dt > 0.0) scene->dt = o.dt;
+  if (o.duration > 0.0) scene->duration = o.duration;
   const std::vector<std::string> engines =
       o.engines.empty() ? registry->names() : registry->expand(splitList(o.engines));
   auto comparison = compareScene(*registry, *scene, engines, o.timing);
@@ -34,7 +38,7 @@ int compare(const CompareOptions& o) {
   }
   printComparison(std::cout, *comparison);
   const std::string dir = o.out.empty() ? "out/compare/" + scene->name : o.out;
-  if (auto written = writeComparison(dir, *comparison); !written) {
+  if (auto written = writeComparison(dir, *comparison, {.obj_frames = o.obj_frames}); !written) {
     std::cerr << "error: " << written.error() << '\n';
     return kFailure;
   }
@@ -60,7 +64,14 @@ void addCompareCommand(CLI::App& app, int& exit_code) {
       "Comma-separated engines (default: every engine, your own included; all: every engine with "
       "mysim once per integrator; all-fixed-step: the same without adaptive ones)");
   addEnginesFileOption(cmd, o->engines_files);
+  cmd->add_option("--dt", o->dt, "Step in s for every engine (overrides the scene)")
+      ->check(kPositive);
+  cmd->add_option("--duration", o->duration, "Duration in s (overrides the scene)")
+      ->check(kPositive);
   cmd->add_option("--out", o->out, "Output directory (default out/compare/SCENE)");
+  cmd->add_flag("--obj-frames", o->obj_frames,
+                "Also write every sampled frame of each engine as ENGINE/obj/frame_NNNNN.obj "
+                "(with normals), for Blender, MeshLab or ParaView");
   addTimingOptions(cmd, o->timing, 1);
   cmd->callback([o, &exit_code] { exit_code = compare(*o); });
 }

@@ -15,6 +15,7 @@ struct RunOptions {
   double duration = 0.0;
   int classic_iterations = 0;
   std::string out;
+  bool obj_frames = false;
   std::vector<std::string> engines_files;
   Timing timing;
 };
@@ -55,7 +56,8 @@ int runScene(const RunOptions& o) {
     return exitCodeFor(record.error());
   }
   const std::string dir = o.out.empty() ? "out/" + scene->name + "/" + o.engine : o.out;
-  if (auto written = writeRunOutputs(dir, model, config.scene_name, config.source, *record);
+  if (auto written = writeRunOutputs(dir, model, config.scene_name, config.source, *record,
+                                     {.obj_frames = o.obj_frames});
       !written) {
     std::cerr << "error: " << written.error() << '\n';
     return kFailure;
@@ -93,6 +95,9 @@ void addRunCommand(CLI::App& app, int& exit_code) {
                   "bullet-classic solver passes per step (overrides bullet.classic_iterations)")
       ->check(CLI::Range(1, 10000));
   run->add_option("--out", options->out, "Output directory (default out/SCENE/ENGINE)");
+  run->add_flag("--obj-frames", options->obj_frames,
+                "Also write every sampled frame as OUT/obj/frame_NNNNN.obj (with normals; "
+                "obj/times.csv gives each frame's time), for Blender, MeshLab or ParaView");
   addTimingOptions(run, options->timing, 1);
   run->callback([options, &exit_code] { exit_code = runScene(*options); });
 }

@@ -2,6 +2,7 @@
 
 #include <sys/resource.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -77,16 +78,61 @@ json summaryJson(const mysim::Model& model, const std::string& scene_name,
   return s;
 }
 
+// Positions of one frame as mysim's flat vector.
+mysim::Vector positions(const mysim::ParticleRows& frame) {
+  mysim::Vector x(3 * frame.rows());
+  for (int i = 0; i < frame.rows(); ++i) x.segment<3>(3 * i) = frame.block<1, 3>(i, 0).transpose();
+  return x;
+}
+
+// One frame as OBJ: a grid cloth as its triangle mesh with vertex normals (mysim::writeObj, as
+// final.obj); any other particle system as its vertices and each spring as a line element.
+void writeFrameObj(std::ostream& out, const mysim::Model& model, const mysim::ParticleRows& f) {
+  if (model.grid) {
+    mysim::writeObj(out, {model.grid->rows, model.grid->cols}, positions(f));
+    return;
+  }
+  out.precision(9);
+  out << "# springcheck particles " << f.rows() << ", springs as lines\n";
+  for (int p = 0; p < f.rows(); ++p) out << "v " << f(p, 0) << ' ' << f(p, 1) << ' ' << f(p, 2) << '\n';
+  for (const mysim::Spring& s : model.springs) out << "l " << s.i + 1 << ' ' << s.j + 1 << '\n';
+}
+
+// obj/frame_00000.obj ... and obj/times.csv (frame,t): numbered from 0 in frame order, five
+// digits (a run has about 200 frames, every step with wind or driven pins: up to 99999).
+std::expected<void, std::string> writeObjSequence(const std::string& folder,
+                                                  const mysim::Model& model,
+                                                  const mysim::RunRecord& r) {
+  if (model.isCircle()) return {};  // one point: nothing to look at as a mesh
+  std::error_code ec;
+  fs::create_directories(folder, ec);
+  if (ec) return std::unexpected("cannot create " + folder + ": " + ec.message());
+  for (std::size_t f = 0; f < r.frames.size(); ++f) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%05zu.obj", f);
+    auto done = writeFileAtomically((fs::path(folder) / name).string(), [&](std::ostream& out) {
+      writeFrameObj(out, model, r.frames[f]);
+    });
+    if (!done) return done;
+  }
+  return writeFileAtomically((fs::path(folder) / "times.csv").string(), [&](std::ostream& out) {
+    out.precision(17);
+    out << "frame,t\n";
+    for (std::size_t f = 0; f < r.times.size(); ++f) out << f << ',' << r.times[f] << '\n';
+  });
+}
+
 }  // namespace
 
 std::expected<void, std::string> writeRunOutputs(const std::string& dir_name,
                                                  const mysim::Model& model,
                                                  const std::string& scene_name,
                                                  const std::string& scene_file,
-                                                 const mysim::RunRecord& r) {
+                                                 const mysim::RunRecord& r,
+                                                 const RunFileOptions& options) {
   if (r.frames.empty()) return std::unexpected("run recorded no frame");
   return writeFolderWhole(dir_name, runFolderKind(), [&](const std::string& staging) {
-    return writeRunFiles(staging, model, scene_name, scene_file, r);
+    return writeRunFiles(staging, model, scene_name, scene_file, r, options);
   });
 }
 
@@ -94,7 +140,8 @@ std::expected<void, std::string> writeRunFiles(const std::string& dir_name,
                                                const mysim::Model& model,
                                                const std::string& scene_name,
                                                const std::string& scene_file,
-                                               const mysim::RunRecord& r) {
+                                               const mysim::RunRecord& r,
+                                               const RunFileOptions& options) {
   const fs::path dir(dir_name);
   std::error_code ec;
   fs::create_directories(dir, ec);
@@ -141,12 +188,14 @@ std::expected<void, std::string> writeRunFiles(const std::string& dir_name,
   }
 
   if (model.kind == mysim::SystemKind::Cloth && model.grid) {
-    mysim::Vector x(3 * particles);
-    for (int i = 0; i < particles; ++i) x.segment<3>(3 * i) = last.block<1, 3>(i, 0).transpose();
     done = writeFileAtomically(in("final.obj"), [&](std::ostream& out) {
-      mysim::writeObj(out, {model.grid->rows, model.grid->cols}, x);
+      mysim::writeObj(out, {model.grid->rows, model.grid->cols}, positions(last));
     });
     if (!done) return done;
+  }
+
+  if (options.obj_frames) {
+    if (done = writeObjSequence((dir / "obj").string(), model, r); !done) return done;
   }
 
   return writeFileAtomically(in("summary.json"), [&](std::ostream& out) {

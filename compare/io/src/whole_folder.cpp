@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstdlib>
@@ -14,6 +15,16 @@
 namespace springcheck {
 namespace fs = std::filesystem;
 namespace {
+
+// Whether `name` is one of the kind's numbered files: prefix, one or more digits, suffix.
+bool isNumbered(const std::string& name, const FolderKind& kind) {
+  const std::string& p = kind.numbered_prefix;
+  const std::string& s = kind.numbered_suffix;
+  if (p.empty() || name.size() <= p.size() + s.size()) return false;
+  if (!name.starts_with(p) || !name.ends_with(s)) return false;
+  const std::string digits = name.substr(p.size(), name.size() - p.size() - s.size());
+  return std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
 
 // The first entry of `dir` that `kind` does not write, or "" if every one is its own.
 std::string foreignEntry(const fs::path& dir, const FolderKind& kind) {
@@ -27,7 +38,8 @@ std::string foreignEntry(const fs::path& dir, const FolderKind& kind) {
       continue;
     }
     const bool leftover_temporary = name.find(".tmp.") != std::string::npos;
-    if (!(e.is_regular_file() && !e.is_symlink() && (kind.files.count(name) || leftover_temporary))) {
+    if (!(e.is_regular_file() && !e.is_symlink() &&
+          (kind.files.count(name) || leftover_temporary || isNumbered(name, kind)))) {
       return name;
     }
   }
@@ -54,10 +66,16 @@ void removeDeadStaging(const fs::path& parent, const std::string& name) {
 
 }  // namespace
 
+const FolderKind& objSequenceKind() {
+  static const FolderKind kind{"OBJ sequence folder", {"times.csv"}, nullptr, "frame_", ".obj"};
+  return kind;
+}
+
 const FolderKind& runFolderKind() {
   static const FolderKind kind{"run folder",
                                {"final_state.csv", "trajectory.npy", "times.npy", "energy.csv",
-                                "final.obj", "summary.json"}};
+                                "final.obj", "summary.json"},
+                               &objSequenceKind()};
   return kind;
 }
 

@@ -199,7 +199,8 @@ json comparisonJson(const Comparison& c) {
 
 }  // namespace
 
-std::expected<void, std::string> writeComparison(const std::string& out, const Comparison& c) {
+std::expected<void, std::string> writeComparison(const std::string& out, const Comparison& c,
+                                                 const RunFileOptions& files) {
   namespace fs = std::filesystem;
   // Two engines whose names map to one folder (mysim:backward-euler, mysim_backward-euler) would
   // write one over the other.
@@ -214,15 +215,17 @@ std::expected<void, std::string> writeComparison(const std::string& out, const C
   }
   // The whole folder at once: an engine that failed this time leaves no folder of an earlier run.
   return writeFolderWhole(out, comparisonFolderKind(), [&](const std::string& dir) {
-    return writeComparisonFiles(dir, c);
+    return writeComparisonFiles(dir, c, files);
   });
 }
 
-std::expected<void, std::string> writeComparisonFiles(const std::string& dir, const Comparison& c) {
+std::expected<void, std::string> writeComparisonFiles(const std::string& dir, const Comparison& c,
+                                                      const RunFileOptions& files) {
   namespace fs = std::filesystem;
   for (const EngineRun& run : c.runs) {
     const std::string folder = (fs::path(dir) / safeDirName(run.engine)).string();
-    if (auto w = writeRunFiles(folder, c.model, c.config.scene_name, c.config.source, run.record);
+    if (auto w = writeRunFiles(folder, c.model, c.config.scene_name, c.config.source, run.record,
+                               files);
         !w) {
       return w;
     }

@@ -18,8 +18,11 @@ struct FolderKind {
   std::string what;              // "run folder", for messages
   std::set<std::string> files;   // the file names it writes
   const FolderKind* subfolders = nullptr;  // any folder inside must be of this kind
+  // Numbered files it writes: PREFIX, digits, SUFFIX ("frame_", ".obj"); empty: none.
+  std::string numbered_prefix, numbered_suffix;
 };
-const FolderKind& runFolderKind();         // final_state.csv, trajectory.npy, ... summary.json
+const FolderKind& runFolderKind();         // final_state.csv, trajectory.npy, ... summary.json, obj/
+const FolderKind& objSequenceKind();       // obj/: frame_NNNNN.obj, times.csv
 const FolderKind& comparisonFolderKind();  // comparison.json, the tables, engine run folders
 
 // Writes `path` whole: `body` fills the staging folder it is given (an empty, fresh folder); on

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "compare/engines/engine_registry.h"
+#include "compare/io/run_output.h"
 #include "compare/metrics/run_metrics.h"
 
 namespace springcheck {
@@ -44,9 +45,10 @@ void printComparison(std::ostream& out, const Comparison& c);
 // folder is written whole (compare/io/whole_folder.h): this comparison or the previous one.
 // Refused: two engines whose names give one folder.
 [[nodiscard]] std::expected<void, std::string> writeComparison(const std::string& dir,
-                                                               const Comparison& c);
+                                                               const Comparison& c,
+                                                               const RunFileOptions& files = {});
 // The same files into `dir` directly (a staging folder).
-[[nodiscard]] std::expected<void, std::string> writeComparisonFiles(const std::string& dir,
-                                                                    const Comparison& c);
+[[nodiscard]] std::expected<void, std::string> writeComparisonFiles(
+    const std::string& dir, const Comparison& c, const RunFileOptions& files = {});
 
 }  // namespace springcheck

@@ -1,4 +1,5 @@
 // Dormand-Prince 5(4): the tolerance is the user's speed/accuracy knob.
+// ctest-label: physics
 #include <gtest/gtest.h>
 
 #include "test_support.h"

@@ -1,5 +1,6 @@
 // Instability that levels off: a damped scene cannot gain energy, so a run whose total energy
 // climbs above its lowest earlier value has gone unstable even if it never explodes.
+// ctest-label: physics
 #include <gtest/gtest.h>
 
 #include "compare/engines/engine_registry.h"

@@ -7,6 +7,7 @@
 //   o  j = 1
 //   |
 //   o  j = 2 ... j = N
+// ctest-label: physics
 #include <gtest/gtest.h>
 
 #include "mysim/chain.h"

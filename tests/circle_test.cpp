@@ -1,5 +1,6 @@
 // The seed's simple system x' = -y, y' = x: each explicit integrator multiplies the radius by
 // |R(ih)| per step, where R is its stability polynomial. Exact figures, so tight tolerances.
+// ctest-label: physics
 #include <gtest/gtest.h>
 
 #include "mysim/circle_system.h"

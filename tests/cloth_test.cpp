@@ -1,4 +1,5 @@
 // Cloth topology, normals and mesh export.
+// ctest-label: unit
 #include "mysim/cloth.h"
 
 #include <gtest/gtest.h>

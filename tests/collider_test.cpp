@@ -5,6 +5,7 @@
 //        . x (above: no contact)       +-------+
 //   -----+------ margin                |   . x | inside: out through the nearest face
 //   ~~~~~~~~~~~~ solid                 +-------+
+// ctest-label: unit
 #include <gtest/gtest.h>
 
 #include <random>

@@ -1,4 +1,7 @@
 // Every comparison metric on a hand-made case whose answer is known, and the gate.
+// ctest-label: unit
+// ctest-label Gate: physics
+// ctest-label RunStatus: physics
 #include <gtest/gtest.h>
 
 #include <numbers>
@@ -147,6 +150,37 @@ TEST(ClosedForm, ExactCircleFramesHaveZeroErrorAndAShiftedOneItsShift) {
   EXPECT_LT(closedFormError(circle, run)->error, 1e-15);
   run.frames[2](0, 0) += 0.01;
   EXPECT_NEAR(closedFormError(circle, run)->error, 0.01, 1e-15);
+}
+
+// A closed form of the state at rest says when its error is the motion left at the end: a chain
+// put exactly on its closed form at the last frame has no error and no floor; one whose last
+// frame is 1e-5 m off and still moving 2e-5 m over the last tenth is at the motion floor.
+TEST(ClosedForm, AnAtRestErrorNearTheMotionLeftSaysSo) {
+  auto scene = mysim::loadScene(std::string(SPRINGCHECK_SOURCE_DIR) + "/scenes/matched/chain_hanging.json");
+  ASSERT_TRUE(scene) << scene.error();
+  const mysim::Model model = mysim::buildModel(*scene);
+  const int n = model.particleCount();
+  const double m = model.mass[1], k = model.springs.front().stiffness;
+  const double L = model.springs.front().rest_length;
+  mysim::ParticleRows rest = mysim::ParticleRows::Zero(n, 6);
+  for (int j = 1; j < n; ++j) {
+    rest(j, 1) = -(j * L + (m * model.gravity.norm() / k) * j * (2 * (n - 1) - j + 1) / 2.0);
+  }
+  mysim::RunRecord run;
+  for (double t : {0.0, 9.0, 10.0}) {
+    run.times.push_back(t);
+    run.frames.push_back(rest);
+  }
+  auto still = closedFormError(model, run);
+  ASSERT_TRUE(still && still->motion_left);
+  EXPECT_LT(still->error, 1e-12);
+  EXPECT_FALSE(still->atMotionFloor());
+  run.frames[1](n - 1, 1) -= 1e-5;  // at 90 % of the run: 1e-5 m below
+  run.frames[2](n - 1, 1) += 1e-5;  // at the end: 1e-5 m above
+  auto moving = closedFormError(model, run);
+  EXPECT_NEAR(moving->error, 1e-5, 1e-12);
+  EXPECT_NEAR(*moving->motion_left, 2e-5, 1e-12);
+  EXPECT_TRUE(moving->atMotionFloor());
 }
 
 TEST(SettlingMetric, TimeAfterWhichKineticEnergyStaysLowAndMaxStrain) {

@@ -1,5 +1,6 @@
 // Global convergence orders on a damped oscillator against its exact solution, and the
 // long-run behaviour theory predicts for each method.
+// ctest-label: physics
 #include <gtest/gtest.h>
 
 #include "test_support.h"

@@ -3,6 +3,7 @@
 // runs 40 steps under every integrator at 1, 2 and 3 threads; the final states' hashes must be
 // equal, and equal to the hash stored for this build type (tests/data/determinism_hashes.json),
 // so a change that moves a single bit of any integrator's result shows here.
+// ctest-label: unit
 #include <gtest/gtest.h>
 #include <omp.h>
 

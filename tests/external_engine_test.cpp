@@ -1,5 +1,7 @@
 // External engines: the example Python engine against closed forms and mysim, the model file,
 // and every way an engine can misbehave, each refused with a message naming engine and file.
+// ctest-label: external
+// ctest-label Npy: unit
 #include "compare/engines/external_engine.h"
 
 #include <gtest/gtest.h>

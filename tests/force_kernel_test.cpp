@@ -1,6 +1,7 @@
 // The vectorised force (every spring once, then gathered per particle) against the plain per-end
 // reference loop, on a cloth with every spring family, spring damping, drag, gravity and wind, in
 // a disturbed state: the AVX2 kernel and the baseline one, at 1 and 2 threads.
+// ctest-label: unit
 #include <gtest/gtest.h>
 #include <omp.h>
 

@@ -5,6 +5,7 @@
 //   o . . . o     5 x 5 hanging cloth, its top corners pinned and moving (pin motion),
 //   . . . . .     structural, shear and flex springs with damping, drag, gusting wind;
 //   . . . . .     started from a perturbed, moving state (seeded), one step of h = 1/60 s
+// ctest-label: physics
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>

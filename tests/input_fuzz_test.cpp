@@ -4,6 +4,7 @@
 // must be accepted, or refused with a message that starts with its source and says what is
 // wrong: never a crash, a hang, an exception or (in the sanitizer build, where CI runs this too) a
 // sanitizer report. Accepted scenes are also built into their model.
+// ctest-label: validation
 #include <gtest/gtest.h>
 
 #include <chrono>

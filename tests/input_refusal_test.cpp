@@ -1,6 +1,7 @@
 // Every input but scenes (tolerance files, sweep specs, engines files) through the one reader:
 // the cases that once crashed or were taken silently, each refused naming the file and field.
 // And the CSV every table is written and read with.
+// ctest-label: unit
 #include <gtest/gtest.h>
 
 #include <filesystem>

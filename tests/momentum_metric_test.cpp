@@ -1,5 +1,6 @@
 // Momentum drift: zero where the model conserves momentum, found where a run breaks it, and not
 // reported where the model itself does not conserve it.
+// ctest-label: physics
 #include "compare/metrics/momentum_metric.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
 // Invariants every integrator must keep on particle systems: free fall, pins, momentum.
+// ctest-label: physics
 #include <gtest/gtest.h>
 
 #include "mysim/chain.h"

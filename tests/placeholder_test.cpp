@@ -1,6 +1,7 @@
 // An engines file's command placeholders (compare/engines/external_engine.h): substituted once,
 // left to right, so a value that holds placeholder text stays text (a folder named "{dir}", a
 // TMPDIR holding "{out}" once looped for ever); {env:NAME} and literal braces.
+// ctest-label: unit
 #include <gtest/gtest.h>
 
 #include <cstdlib>

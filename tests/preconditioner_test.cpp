@@ -2,6 +2,9 @@
 // sweeps against the same matrices assembled densely, Eisenstat's SSOR-CG against plain CG with
 // the assembled SSOR preconditioner, and the three preconditioners reaching the same steps on a
 // cloth, SSOR in the fewest iterations.
+// ctest-label: physics
+// ctest-label SpringBlockMatrix: unit
+// ctest-label SsorConjugateGradient: unit
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>

@@ -1,4 +1,5 @@
 // recommend: the cheapest choice under an error bound, and the runner-up, worked out by hand.
+// ctest-label: unit
 #include "compare/studies/recommend.h"
 
 #include <gtest/gtest.h>

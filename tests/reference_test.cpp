@@ -1,4 +1,5 @@
 // The Bullet twins: built like mysim's model, and checked against closed forms.
+// ctest-label: bullet,physics
 #include <BulletSoftBody/btSoftBody.h>
 #include <gtest/gtest.h>
 

@@ -1,5 +1,6 @@
 // Malformed scenes are refused with a message naming the file and the field, never a crash.
 // This file also runs under the sanitizer preset (ctest label "validation").
+// ctest-label: validation,unit
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>

@@ -1,6 +1,7 @@
 // Every seed scene runs through every seed integrator (Euler, trapezoidal, RK4) at a step where
 // it is stable. The steps come from the stability limits (see docs/findings.md for the sweep):
 // the seed could not find any for Euler and the trapezoidal rule on the cloth.
+// ctest-label: physics
 #include <gtest/gtest.h>
 
 #include "mysim/scene_file.h"

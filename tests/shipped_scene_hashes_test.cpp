@@ -3,6 +3,7 @@
 // tests/data/shipped_scene_hashes.json (taken before the code was restructured), or is refused
 // where it was refused then. A redesign must not move a single bit; an engine or integrator with
 // no stored hash fails, naming the hash to store.
+// ctest-label: physics,bullet
 #include <gtest/gtest.h>
 
 #include <fstream>

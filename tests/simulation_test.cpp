@@ -1,4 +1,6 @@
 // The run loop: determinism, blow-up detection, wind, energy bookkeeping.
+// ctest-label: unit
+// ctest-label ExternalWork: physics
 #include "mysim/simulation.h"
 
 #include <gtest/gtest.h>

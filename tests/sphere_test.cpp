@@ -5,6 +5,8 @@
 //         /  r=.3 \   sphere at the origin
 //         \       /
 //          '-...-'
+// ctest-label: physics
+// ctest-label SphereCollider: unit
 #include <gtest/gtest.h>
 
 #include "mysim/scene_file.h"

@@ -1,4 +1,5 @@
 // Spring force terms alone: the analytic Jacobians against central finite differences.
+// ctest-label: unit
 #include "mysim/spring.h"
 
 #include <gtest/gtest.h>

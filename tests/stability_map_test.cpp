@@ -1,5 +1,7 @@
 // Stability maps on real scenes: the highest natural frequency against its closed form, the
 // mass-ratio stressor, and measured limits against the theory line h w_max < c.
+// ctest-label: physics
+// ctest-label StressedModel: unit
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,6 @@
 // Sweeps (table, resume, shards) and the stability search against theory.
+// ctest-label: physics
+// ctest-label SmallSweep: unit
 #include "compare/studies/sweep.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
 // Every viewer key, through the same handler the window calls (no window needed).
+// ctest-label: viewer
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,6 +1,7 @@
 // XPBD (mysim/src/xpbd.cpp): what it must converge to.
 //
 //   anchor (pinned) o----/\/\/\----o particle        the oscillator of test_support.h
+// ctest-label: physics
 #include <gtest/gtest.h>
 
 #include <cmath>

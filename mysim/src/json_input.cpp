@@ -65,10 +65,15 @@ class CheckedSax final : public json::json_sax_t {
       if (v.is_object()) {
         const std::string& key = k + 1 == stack_.size() && !last.empty() ? last : stack_[k].key;
         if (key.empty()) continue;
-        p += (p.empty() ? "" : ".") + clip(key, 60);
+        // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on
+        // "literal" + std::string temporaries here.
+        if (!p.empty()) p += '.';
+        p += clip(key, 60);
       } else {
         // The element being read: the last one placed while inside it, else the next.
-        p += "[" + std::to_string(k + 1 < stack_.size() ? v.size() - 1 : v.size()) + "]";
+        p += '[';
+        p += std::to_string(k + 1 < stack_.size() ? v.size() - 1 : v.size());
+        p += ']';
       }
     }
     return p.empty() ? "(top level)" : p;

@@ -33,6 +33,10 @@ json metricsJson(const EngineMetrics& m) {
   }
   if (m.closed_form) {
     j["closed_form"] = {{"quantity", m.closed_form->quantity}, {"exact", m.closed_form->exact}};
+    if (m.closed_form->motion_left) {
+      j["closed_form"]["motion_left"] = *m.closed_form->motion_left;
+      j["closed_form"]["at_motion_floor"] = m.closed_form->atMotionFloor();
+    }
   }
   j["blowup_time"] = m.blew_up ? json(m.blowup_time) : json();
   j["status"] = m.status;

@@ -85,7 +85,8 @@ void writeJunit(std::ostream& out, const GateReport& report, const std::string& 
       const std::string measured = r.measured ? numberText(*r.measured) : "-";
       out << ">\n      <system-out>"
           << xmlEscaped("measured " + measured + " <= bound " + numberText(r.check.bound) +
-                        "; why this bound: " + r.check.why)
+                        "; why this bound: " + r.check.why +
+                        (r.note.empty() ? "" : "; note: " + r.note))
           << "</system-out>\n    </testcase>\n";
       continue;
     }
@@ -132,6 +133,7 @@ void writeGateJson(std::ostream& out, const GateReport& report, const std::strin
                        {"why", r.check.why},
                        {"passed", r.passed},
                        {"problem", r.problem},
+                       {"note", r.note},
                        {"measured", r.measured ? nlohmann::json(*r.measured) : nlohmann::json()}});
   }
   const nlohmann::json all = {{"tolerances", tolerances}, {"checks", results}};

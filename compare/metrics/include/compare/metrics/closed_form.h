@@ -17,6 +17,12 @@ struct ClosedFormError {
   std::string quantity;  // what was compared
   double error = 0.0;    // m for positions, relative for the period
   double exact = 0.0;    // the closed-form value compared against (end position or period)
+  // For a closed form of the state at rest: how far the nodes still moved over the run's last
+  // tenth, m. An error not much above it is the motion left at the end, not the engine's
+  // accuracy (the same for float and double engines): run longer to see that.
+  std::optional<double> motion_left;
+  // motion_left is close enough to the error to be its floor (error < 10 x motion_left).
+  bool atMotionFloor() const { return motion_left && error < 10.0 * *motion_left; }
 };
 // Read from the model (so a sweep's scaled model gets its own closed form): a chain of equal
 // springs and masses, pinned at particle 0 only, with no wind, pin motion or sphere.

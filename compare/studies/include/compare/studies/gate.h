@@ -16,6 +16,7 @@ struct CheckResult {
   std::optional<double> measured;
   bool passed = false;
   std::string problem;  // why there is no measurement (refused, blew up, metric undefined)
+  std::string note;     // what the number does not say (a closed form at the motion left)
 };
 
 struct GateReport {

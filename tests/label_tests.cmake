@@ -1,0 +1,55 @@
+# ctest labels from the test sources themselves (README lists the labels): every test file says
+# what its suites are on a line
+#     // ctest-label: LABEL[,LABEL...]
+# and may label single suites otherwise on lines
+#     // ctest-label SUITE: LABEL[,LABEL...]
+# A test file without a label line stops the configure, naming the file: a new suite is never
+# labelled by default. discover_labelled_tests(TARGET) registers the target's tests (through
+# gtest_discover_tests) once per label set, each with the filter of its suites (parameterised
+# suites as both SUITE.* and */SUITE.*).
+function(discover_labelled_tests target)
+  get_target_property(_sources ${target} SOURCES)
+  set(_label_sets "")
+  foreach(_source IN LISTS _sources)
+    get_filename_component(_path ${_source} ABSOLUTE BASE_DIR ${CMAKE_CURRENT_SOURCE_DIR})
+    file(READ ${_path} _text)
+    if(NOT _text MATCHES "// ctest-label: ([a-z,]+)")
+      message(FATAL_ERROR "${_path}: no '// ctest-label: LABEL' line (tests/label_tests.cmake)")
+    endif()
+    set(_default ${CMAKE_MATCH_1})
+    string(REGEX MATCHALL "(TEST|TEST_F|TEST_P)\\([A-Za-z0-9_]+," _uses "${_text}")
+    set(_suites "")
+    foreach(_use IN LISTS _uses)
+      string(REGEX REPLACE ".*\\(([A-Za-z0-9_]+),$" "\\1" _suite "${_use}")
+      list(APPEND _suites ${_suite})
+    endforeach()
+    list(REMOVE_DUPLICATES _suites)
+    foreach(_suite IN LISTS _suites)
+      set(_label ${_default})
+      if(_text MATCHES "// ctest-label ${_suite}: ([a-z,]+)")
+        set(_label ${CMAKE_MATCH_1})
+      endif()
+      string(REPLACE "," "_" _key "${_label}")
+      if(DEFINED _suite_${_suite})
+        # A suite spread over files (one executable) must carry one label set.
+        if(NOT _suite_label_${_suite} STREQUAL _label)
+          message(FATAL_ERROR "${_path}: suite ${_suite} is labelled ${_label} here and "
+                              "${_suite_label_${_suite}} in ${_suite_${_suite}}")
+        endif()
+        continue()
+      endif()
+      set(_suite_${_suite} ${_path})
+      set(_suite_label_${_suite} ${_label})
+      list(APPEND _filter_${_key} "${_suite}.*" "*/${_suite}.*")
+      list(APPEND _label_sets ${_label})
+    endforeach()
+  endforeach()
+  list(REMOVE_DUPLICATES _label_sets)
+  foreach(_label IN LISTS _label_sets)
+    string(REPLACE "," "_" _key "${_label}")
+    string(REPLACE "," ";" _labels "${_label}")
+    string(REPLACE ";" ":" _filter "${_filter_${_key}}")
+    gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60 TEST_FILTER "${_filter}"
+                         PROPERTIES LABELS "${_labels}")
+  endforeach()
+endfunction()

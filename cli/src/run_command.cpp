@@ -64,7 +64,10 @@ int runScene(const RunOptions& o) {
   }
   std::cout << scene->name << " [" << o.engine << ", " << record->integrator << ", dt "
             << record->dt << " s]: " << record->steps << " steps in " << record->wall_seconds
-            << " s (" << record->threads << " thread" << (record->threads > 1 ? "s" : "")
+            << " s ("
+            << (record->threads > 0 ? std::to_string(record->threads) + " thread" +
+                                          (record->threads > 1 ? "s" : "")
+                                    : std::string("its own threads"))
             << ", fastest of " << record->repeats << "; " << record->realtimeFactor()
             << "x realtime) -> " << dir << '\n';
   if (record->blowup) {

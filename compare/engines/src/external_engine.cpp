@@ -272,7 +272,10 @@ Engine externalEngine(const ExternalEngineSpec& spec) {
     auto system = mysim::makeSystem(model, config.limits);
     ReplayStepper replay(std::move(run->result), run->plan, model.isCircle());
     mysim::RunRecord record = mysim::simulate(*system, replay, system->initialState(), config.run);
-    record.integrator = spec.name;
+    // Its own method, whatever the scene names (the model file passes that on; it may follow it),
+    // and a thread count springcheck does not know (0: unknown, null in summary.json).
+    record.integrator = "own method (the scene names " + config.integrator.name + ")";
+    record.threads = 0;
     // The engine's own stepping time if it reported one, else the whole process's.
     record.wall_seconds = own_seconds.value_or(run->process_seconds);
     if (!own_seconds) {

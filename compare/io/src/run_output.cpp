@@ -46,7 +46,7 @@ json summaryJson(const mysim::Model& model, const std::string& scene_name,
             {"wall_seconds", r.wall_seconds},
             {"wall_median_seconds", r.wall_median_seconds},
             {"repeats", r.repeats},
-            {"threads", r.threads},
+            {"threads", r.threads > 0 ? json(r.threads) : json()},  // 0: unknown (external)
             {"realtime_factor", r.realtimeFactor()},
             {"accepted_steps", r.counts.accepted},
             {"rejected_steps", r.counts.rejected},

@@ -63,21 +63,25 @@ void printComparison(std::ostream& out, const Comparison& c) {
       << " s, " << c.config.run.duration << " s\n";
   for (const Comparison::Refusal& r : c.refused) out << "  refused: " << r.reason << '\n';
   for (const Comparison::Refusal& r : c.failed) out << "  FAILED: " << r.reason << '\n';
-  char line[512];
-  std::snprintf(line, sizeof line, "  %-30s", "per engine");
-  out << line;
+  // Columns as wide as their headers: a name is never cut (sag_difference, mysim:symplectic-euler).
+  auto cell = [](const std::string& text, std::size_t width) {
+    return std::string(width > text.size() ? width - text.size() : 0, ' ') + text;
+  };
+  auto left = [](const std::string& text, std::size_t width) {
+    return text + std::string(width > text.size() ? width - text.size() : 0, ' ');
+  };
+  std::vector<std::size_t> engine_width;
+  out << "  " << left("per engine", 34);
   for (const EngineMetrics& m : c.engines) {
-    std::snprintf(line, sizeof line, " %18s", m.engine.c_str());
-    out << line;
+    engine_width.push_back(std::max<std::size_t>(12, m.engine.size()) + 1);
+    out << cell(m.engine, engine_width.back());
   }
   out << '\n';
   for (const MetricInfo& info : metricCatalog()) {
     if (info.pair) continue;
-    std::snprintf(line, sizeof line, "  %-30s", (info.name + " [" + info.unit + "]").c_str());
-    out << line;
-    for (const EngineMetrics& m : c.engines) {
-      std::snprintf(line, sizeof line, " %18s", format(metricValue(m, info.name)).c_str());
-      out << line;
+    out << "  " << left(info.name + " [" + info.unit + "]", 34);
+    for (std::size_t e = 0; e < c.engines.size(); ++e) {
+      out << cell(format(metricValue(c.engines[e], info.name)), engine_width[e]);
     }
     out << '\n';
   }
@@ -91,21 +95,23 @@ void printComparison(std::ostream& out, const Comparison& c) {
     }
   }
   if (c.pairs.empty()) return;
-  std::snprintf(line, sizeof line, "  %-40s", "per pair");
-  out << line;
+  std::size_t pair_width = 8;
+  for (const PairMetrics& p : c.pairs) pair_width = std::max(pair_width, p.a.size() + p.b.size() + 3);
+  std::vector<std::size_t> metric_width;
+  out << "  " << left("per pair", pair_width);
   for (const MetricInfo& info : metricCatalog()) {
     if (!info.pair) continue;
-    std::snprintf(line, sizeof line, " %12s", info.name.substr(0, 12).c_str());
-    out << line;
+    const std::string header = info.name + " [" + info.unit + "]";
+    metric_width.push_back(std::max<std::size_t>(10, header.size()) + 2);
+    out << cell(header, metric_width.back());
   }
   out << '\n';
   for (const PairMetrics& p : c.pairs) {
-    std::snprintf(line, sizeof line, "  %-40s", (p.a + " ~ " + p.b).c_str());
-    out << line;
+    out << "  " << left(p.a + " ~ " + p.b, pair_width);
+    std::size_t k = 0;
     for (const MetricInfo& info : metricCatalog()) {
       if (!info.pair) continue;
-      std::snprintf(line, sizeof line, " %12s", format(metricValue(p, info.name)).c_str());
-      out << line;
+      out << cell(format(metricValue(p, info.name)), metric_width[k++]);
     }
     out << '\n';
   }

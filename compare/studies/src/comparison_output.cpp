@@ -23,7 +23,7 @@ json metricsJson(const EngineMetrics& m) {
             {"wall_median_seconds", m.wall_median_seconds},
             {"realtime_factor", m.realtime_factor},
             {"repeats", m.repeats},
-            {"threads", m.threads},
+            {"threads", m.threads > 0 ? json(m.threads) : json()},  // 0: unknown (external)
             {"external_work", m.external_work},
             {"energy_reference", m.drift.reference}};
   for (const MetricInfo& info : metricCatalog()) {
@@ -96,7 +96,7 @@ Write writeEngineTable(const std::string& path, const Comparison& c) {
         if (v) engines << *v;
       }
       engines << ',' << m.wall_seconds << ',' << m.wall_median_seconds << ',' << m.realtime_factor
-              << ',' << m.repeats << ',' << m.threads << ',' << m.steps << ',' << m.status << '\n';
+              << ',' << m.repeats << ',' << (m.threads > 0 ? std::to_string(m.threads) : "") << ',' << m.steps << ',' << m.status << '\n';
     }
   });
 }

@@ -95,7 +95,7 @@ EngineMetrics recordRun(SweepRow& row, const mysim::Model& model, const mysim::R
   row.wall_seconds = r.wall_seconds;
   row.wall_median_seconds = r.wall_median_seconds;
   row.realtime_factor = r.realtimeFactor();
-  row.threads = r.threads;
+  if (r.threads > 0) row.threads = r.threads;  // 0: unknown (an external engine)
   row.steps = r.steps;
   if (r.counts.derivative_evaluations >= 0) row.derivative_evaluations = r.counts.derivative_evaluations;
   row.accepted_steps = r.counts.accepted;
@@ -219,7 +219,7 @@ void retimeRows(const EngineRegistry& registry, std::vector<std::optional<CaseRu
     row.wall_median_seconds = times.median;
     row.realtime_factor = static_cast<double>(*row.steps) * row.c.dt / times.fastest;
     row.repeats = static_cast<long>(walls[k].size());
-    row.threads = threads[k];
+    if (threads[k] > 0) row.threads = threads[k];
     row.jobs = 1;  // timed one at a time
   }
 }

@@ -97,7 +97,7 @@ def scene_page(entry):
             variant = sorted({e[1] for e in engines if e[0] == engine}).index(iterations)
             kw = ctx.styles.line(engine, variant)
             mine = [r for r in rows if (r["engine"], r["classic_iterations"]) == (engine, iterations)]
-            base = sorted((number(r["stiffness"]), r) for r in mine if number(r["mass_ratio"]) == ratios[0])
+            base = sorted((number(r["stiffness_scale"]), r) for r in mine if number(r["mass_ratio"]) == ratios[0])
             shown = [(k, number(r["h_stable"])) for k, r in base if r["status"] in FOUND and number(r["h_stable"])]
             if shown:
                 map_ax.loglog(*zip(*shown), label=label, **kw)
@@ -108,13 +108,18 @@ def scene_page(entry):
             if refused:
                 notes.append((engine, ", ".join(f"{v:g}" for v in refused)))
             for j, ratio in enumerate(ratios):
-                pts = [r for r in mine if number(r["mass_ratio"]) == ratio and r["status"] in FOUND]
-                hw = [number(r["h_w_max"]) for r in pts if number(r["h_w_max"])]
+                at_ratio = [r for r in mine if number(r["mass_ratio"]) == ratio]
                 y = row_index + (j - (len(ratios) - 1) / 2) * 0.22
-                capped = [r for r in pts if r["status"] == "stable-at-max"]
-                limit_ax.scatter(hw, [y] * len(hw), color=kw["color"], marker=kw["marker"], s=22,
-                                 alpha=0.85, edgecolors="none" if not capped else "black")
-            if not any(number(r["h_w_max"]) for r in mine if r["status"] in FOUND):
+                # Filled: the limit found (bracketed). Hollow: stable at the largest step tried, drawn
+                # there (h_stable w_max): the limit lies beyond it.
+                hw = [number(r["h_w_max"]) for r in at_ratio if r["status"] == "bracketed" and number(r["h_w_max"])]
+                limit_ax.scatter(hw, [y] * len(hw), color=kw["color"], marker=kw["marker"], s=22, alpha=0.85,
+                                 edgecolors="none")
+                capped = [number(r["h_stable"]) * number(r["w_max"]) for r in at_ratio
+                          if r["status"] == "stable-at-max" and number(r["h_stable"]) and number(r["w_max"])]
+                limit_ax.scatter(capped, [y] * len(capped), facecolors="none", edgecolors=kw["color"],
+                                 marker=kw["marker"], s=26, linewidths=1.2)
+            if not any(r["status"] == "bracketed" and number(r["h_w_max"]) for r in mine):
                 found = [r for r in mine if r["status"] in FOUND]
                 text = ("stable at every step tried" if found else
                         "refuses this model" if any(r["status"] == "refused" for r in mine) else "never stable")
@@ -134,17 +139,19 @@ def scene_page(entry):
         limit_ax.set_xlabel("largest stable step times the highest natural frequency, h w_max [1]")
         limit_ax.set_title("the limit, scale-free; black bar: theory c; right: measured / theory", fontsize=9)
         limit_ax.grid(True, axis="x", which="both", alpha=0.3)
-        map_ax.set_xlabel("spring stiffness k [N/m]")
+        map_ax.set_xlabel("spring stiffness, times the scene's own (1 = as written) [1]")
         map_ax.set_ylabel("largest stable step [s]")
         map_ax.set_title(f"the map at neighbour mass ratio {ratios[0]:g} (thin dashed: theory c / w_max)", fontsize=9)
         map_ax.grid(True, which="both", alpha=0.3)
         map_ax.legend(fontsize=6.5, loc="lower left")
         spread = ", ".join(f"{r:g}" for r in ratios)
-        return [f"Right: one row per engine, one dot per stiffness, the dots of mass ratios {spread} "
-                "stacked top to bottom; a dot outlined black is stable at the largest step tried."] + \
+        return [f"Right: one row per engine, one dot per stiffness scale, the dots of mass ratios {spread} "
+                "stacked top to bottom; a filled dot is the limit found, a hollow one a cell still stable at the "
+                "largest step tried (drawn there: its limit lies further right)."] + \
             [f"{engine} refuses mass ratio {ratios_text} (no dots there)." for engine, ratios_text in sorted(set(notes))]
     return Page(f"stability_{scene}", f"Where does each engine go unstable on {scene}, and how close to theory?",
-                "Every engine's largest stable step, found by bisection, across spring stiffness and neighbour "
+                "Every engine's largest stable step, found by bisection, on the scene as written with all its "
+                "springs' stiffness scaled by one factor, across that factor and the neighbour "
                 "mass ratio (stiffer springs and lighter masses raise the highest natural frequency w_max, found "
                 "by Lanczos). Left: the step itself. Right: h w_max, which removes the scale: an engine whose "
                 "dots sit on its black bar is exactly as stable as its scheme's theory.", draw)

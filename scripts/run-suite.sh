@@ -53,7 +53,7 @@ $B stability --scene scenes/matched/cloth_hanging.json --mass-ratios 1,1e4 --out
 # The families that claim unconditional stability, on the cloth up to h w_max = 3000 (1/60 s and
 # beyond on its stiffest springs): where each stops having it (backward Euler beside them).
 $B stability --scene scenes/matched/cloth_hanging.json --name cloth_hanging_large_steps \
-  --engines mysim:xpbd,mysim:local-global,mysim:vbd,mysim:backward-euler --stiffness 100,1e4 \
+  --engines mysim:xpbd,mysim:local-global,mysim:vbd,mysim:backward-euler --stiffness-scales 1,100 \
   --mass-ratios 1,1e4 --max-h-omega 3000 --out "$OUT/stability" >/dev/null
 $B report --results "$OUT" --out "$OUT/report"
 echo "main job done in $(( $(date +%s) - start )) s; report: $OUT/report/report.pdf"

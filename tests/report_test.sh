@@ -27,7 +27,7 @@ $B recommend "$OUT/sweep/small_convergence.csv" --max-error 1e-3 --json "$OUT/re
 $B stability --integrators rk4,verlet,backward-euler --stiffness 10,100 --masses 1 \
   --out "$OUT/stability" --extremes --jobs 2 >/dev/null 2>&1
 $B stability --scene scenes/matched/chain_hanging.json --engines mysim:symplectic-euler,bullet-deformable \
-  --stiffness 10,100 --mass-ratios 1,100 --out "$OUT/stability" --jobs 2 >/dev/null 2>&1
+  --stiffness-scales 0.2,2 --mass-ratios 1,100 --out "$OUT/stability" --jobs 2 >/dev/null 2>&1
 for scene in chain_swing chain_hanging; do
   $B compare "scenes/matched/$scene.json" --engines mysim,mysim:symplectic-euler,bullet-deformable,pysim \
     --engines-file $E --out "$OUT/energy/$scene" >/dev/null

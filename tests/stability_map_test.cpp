@@ -5,10 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 
 #include "compare/engines/engine_registry.h"
 #include "compare/studies/natural_frequency.h"
 #include "compare/studies/stability.h"
+#include "mysim/scene_file.h"
 
 namespace springcheck {
 namespace {
@@ -49,13 +51,29 @@ TEST(HighestFrequency, SingleSpringIsSqrtOfStiffnessOverReducedMass) {
 
 TEST(StressedModel, KeepsTotalMassAndAlternatesNeighbourMassesInTheRatio) {
   const mysim::Model base = mysim::buildModel(chain(9, 100.0, 0.05));
-  const mysim::Model m = stressedModel(base, 1e3, 100.0);
+  const mysim::Model m = stressedModel(base, 10.0, 100.0);
   EXPECT_NEAR(m.mass.sum(), base.mass.sum(), 1e-12);
   for (const mysim::Spring& s : m.springs) {
     EXPECT_EQ(s.stiffness, 1e3);
     const double ratio = std::max(m.mass[s.i], m.mass[s.j]) / std::min(m.mass[s.i], m.mass[s.j]);
     EXPECT_NEAR(ratio, 100.0, 1e-9);
   }
+}
+
+// A scene is stressed as written: every spring scaled by one factor, so a cloth's flex springs
+// keep their tenth of the structural stiffness (cloth_stiff: 2000 and 200 N/m become 20000 and
+// 2000 at a scale of 10, never one stiffness for all).
+TEST(StressedModel, ScalesTheScenesSpringsAsWrittenKeepingTheirRatios) {
+  auto scene = mysim::loadScene(std::string(SPRINGCHECK_SOURCE_DIR) + "/scenes/matched/cloth_stiff.json");
+  ASSERT_TRUE(scene) << scene.error();
+  const mysim::Model base = mysim::buildModel(*scene);
+  const mysim::Model m = stressedModel(base, 10.0, 1.0);
+  std::set<double> stiffness;
+  for (std::size_t k = 0; k < m.springs.size(); ++k) {
+    EXPECT_DOUBLE_EQ(m.springs[k].stiffness, 10.0 * base.springs[k].stiffness);
+    stiffness.insert(m.springs[k].stiffness);
+  }
+  EXPECT_EQ(stiffness, (std::set<double>{2000.0, 20000.0}));
 }
 
 // In the linear regime (stiff springs: little stretch), the measured limit is the theory's.
@@ -67,7 +85,7 @@ TEST(SceneStability, MeasuredLimitsMeetTheTheoryLineOnAStiffChain) {
       RunConfig config = runConfig(scene);
       config.limits.max_strain = 1e6;
       const StabilityLimit l = sceneStability(
-          registry, stressedModel(mysim::buildModel(scene), 0.0, ratio), config, engine, {});
+          registry, stressedModel(mysim::buildModel(scene), 1.0, ratio), config, engine, {});
       ASSERT_EQ(l.status, "bracketed") << engine;
       ASSERT_TRUE(l.theory);
       EXPECT_NEAR(l.h_stable / *l.theory, 1.0, 0.05) << engine << " mass ratio " << ratio;

@@ -25,7 +25,8 @@ struct StabilityOptions {
   std::string name;              // the map's table, stability_NAME.csv (default: the scene's)
   std::vector<std::string> engines_files;
   std::vector<std::string> integrators = mysim::integratorNames(true);
-  std::vector<double> stiffness = {10, 100, 1e3, 1e4, 1e5};
+  std::vector<double> stiffness = {10, 100, 1e3, 1e4, 1e5};         // the oscillator's, N/m
+  std::vector<double> stiffness_scales = {0.1, 1, 10, 100, 1000};  // a scene's, times as written
   std::vector<double> masses = {1e-6, 1e-2, 1.0};
   double damping_ratio = 0.05;
   std::string out = "out/stability";
@@ -63,7 +64,7 @@ int sceneStabilityMaps(const StabilityOptions& o, const EngineRegistry& registry
                        const mysim::Scene& scene) {
   StabilityMapSettings settings{registry.expand(o.engines),
                                 o.classic_iterations,
-                                o.stiffness,
+                                o.stiffness_scales,
                                 o.mass_ratios,
                                 {},
                                 o.jobs,
@@ -79,13 +80,13 @@ int sceneStabilityMaps(const StabilityOptions& o, const EngineRegistry& registry
   settings.search.h_max_omega = o.max_h_omega;
   if (o.whole_run) settings.search.duration = scene.duration;
   const std::vector<StabilityMapCell> cells = stabilityMaps(registry, scene, settings);
-  std::printf("%-24s %4s %9s %7s %11s %11s %11s %7s %7s  %s\n", "engine", "pass", "k [N/m]",
+  std::printf("%-24s %4s %9s %7s %11s %11s %11s %7s %7s  %s\n", "engine", "pass", "k scale",
               "m ratio", "w_max", "h_max [s]", "theory [s]", "h w", "ratio", "status");
   for (const StabilityMapCell& c : cells) {
     const StabilityLimit& l = c.limit;
     std::printf("%-24s %4s %9.3g %7.3g %11.4g %11.4g %11s %7s %7s  %s%s%s\n", c.engine.c_str(),
                 c.classic_iterations ? std::to_string(c.classic_iterations).c_str() : "",
-                c.stiffness, c.mass_ratio, l.w_max, l.h_stable, brief(l.theory).c_str(),
+                c.stiffness_scale, c.mass_ratio, l.w_max, l.h_stable, brief(l.theory).c_str(),
                 brief(c.h_w_max).c_str(), brief(c.ratio).c_str(), l.status.c_str(),
                 l.unstable_check.empty() ? "" : ": ", l.unstable_check.substr(0, 60).c_str());
   }
@@ -145,8 +146,9 @@ void addStabilityCommand(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand(
       "stability", "Largest stable step per integrator, stiffness and mass (bisection)");
   cmd->add_option("--scene", o->scene,
-                  "Scene: every engine's stability map on it across --stiffness and "
-                  "--mass-ratios, with the w_max theory line (default: the built-in oscillator)");
+                  "Scene: every engine's stability map on it, as written, across "
+                  "--stiffness-scales and --mass-ratios, with the w_max theory line (default: the "
+                  "built-in oscillator)");
   cmd->add_option("--engines", o->engines, "Scene maps: engines (all-fixed-step: every one)")
       ->delimiter(',')
       ->capture_default_str();
@@ -184,8 +186,14 @@ void addStabilityCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--integrators", o->integrators, "Oscillator: integrators")
       ->delimiter(',')
       ->capture_default_str();
-  cmd->add_option("--stiffness", o->stiffness, "Spring stiffness values, N/m")
+  cmd->add_option("--stiffness", o->stiffness, "Oscillator: spring stiffness values, N/m")
       ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--stiffness-scales", o->stiffness_scales,
+                  "Scene maps: each spring's stiffness as the scene writes it, times these "
+                  "(1: as written; the springs' ratios kept)")
+      ->delimiter(',')
+      ->check(CLI::Range(1e-6, 1e6))
       ->capture_default_str();
   cmd->add_option("--masses", o->masses, "Oscillator: particle masses, kg")
       ->delimiter(',')
@@ -195,7 +203,17 @@ void addStabilityCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--out", o->out, "Output directory")->capture_default_str();
   cmd->add_flag("--extremes", o->extremes, "Also: 1e6-step energy drift, a 256 x 256 cloth");
   cmd->add_option("--jobs", o->jobs, "Parallel runs (default: all cores)");
-  cmd->callback([o, &exit_code] { exit_code = stability(*o); });
+  cmd->callback([o, cmd, &exit_code] {
+    // A scene is mapped as written: one stiffness for every spring would make another scene
+    // (cloth_stiff's 200 N/m flex springs as stiff as its 2000 N/m structural ones).
+    if (!o->scene.empty() && cmd->count("--stiffness") > 0) {
+      std::cerr << "error: --stiffness sets the oscillator's springs; a scene map scales the "
+                   "scene's own springs: use --stiffness-scales\n";
+      exit_code = kBadInput;
+      return;
+    }
+    exit_code = stability(*o);
+  });
 }
 
 }  // namespace springcheck

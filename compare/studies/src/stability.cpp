@@ -116,11 +116,9 @@ std::optional<double> stepLimitConstant(const std::string& integrator) {
   return c;
 }
 
-mysim::Model stressedModel(const mysim::Model& model, double stiffness, double mass_ratio) {
+mysim::Model stressedModel(const mysim::Model& model, double stiffness_scale, double mass_ratio) {
   mysim::Model m = model;
-  if (stiffness > 0) {
-    for (mysim::Spring& s : m.springs.edit()) s.stiffness = stiffness;
-  }
+  if (stiffness_scale != 1.0) mysim::scaleStiffness(m, stiffness_scale);
   if (mass_ratio != 1.0 && m.particleCount() > 1) {
     auto heavy = [&](int p) {
       if (m.grid) return (p / m.grid->cols + p % m.grid->cols) % 2 == 1;

@@ -41,9 +41,9 @@ std::vector<StabilityMapCell> stabilityMaps(const EngineRegistry& registry,
     const std::vector<int> passes =
         engine == "bullet-classic" ? settings.classic_iterations : std::vector<int>{0};
     for (int p : passes) {
-      for (double k : settings.stiffness) {
+      for (double scale : settings.stiffness_scales) {
         for (double ratio : settings.mass_ratios)
-          cells.push_back({engine, p, k, ratio, {}, {}, {}});
+          cells.push_back({engine, p, scale, ratio, {}, {}, {}});
       }
     }
   }
@@ -62,7 +62,7 @@ std::vector<StabilityMapCell> stabilityMaps(const EngineRegistry& registry,
     if (c.classic_iterations > 0) {
       config.engine_settings["bullet"]["classic_iterations"] = c.classic_iterations;
     }
-    c.limit = sceneStability(registry, stressedModel(base, c.stiffness, c.mass_ratio), config,
+    c.limit = sceneStability(registry, stressedModel(base, c.stiffness_scale, c.mass_ratio), config,
                              c.engine, settings.search);
     c.limit.mass_ratio = c.mass_ratio;
     const StabilityLimit& l = c.limit;
@@ -80,13 +80,13 @@ std::expected<void, std::string> writeStabilityMaps(const std::string& path,
                                                     const std::vector<StabilityMapCell>& cells) {
   return writeFileAtomically(path, [&](std::ostream& out) {
     out.precision(8);
-    out << "system,engine,classic_iterations,stiffness,mass_ratio,w_max,h_stable,h_unstable,"
+    out << "system,engine,classic_iterations,stiffness_scale,mass_ratio,w_max,h_stable,h_unstable,"
            "status,unstable_check,theory_h,ratio,h_w_max\n";
     for (const StabilityMapCell& c : cells) {
       const StabilityLimit& l = c.limit;
       out << csvField(scene_name) << ',' << csvField(c.engine) << ','
           << (c.classic_iterations ? std::to_string(c.classic_iterations) : "") << ','
-          << c.stiffness << ',' << c.mass_ratio << ',' << l.w_max << ',' << l.h_stable << ','
+          << c.stiffness_scale << ',' << c.mass_ratio << ',' << l.w_max << ',' << l.h_stable << ','
           << l.h_unstable << ',' << l.status << ',' << csvField(l.unstable_check) << ','
           << cell(l.theory) << ',' << cell(c.ratio) << ',' << cell(c.h_w_max) << '\n';
     }

@@ -50,10 +50,11 @@ StabilityLimit oscillatorStability(const EngineRegistry& registry, const std::st
 // its step (dopri5).
 std::optional<double> stepLimitConstant(const std::string& integrator);
 
-// The model with every spring at `stiffness` (0: keep each) and neighbouring particles' masses in
-// the ratio `mass_ratio` (heavy / light, alternating along the index, in a checkerboard on a
+// The model as written with every spring's stiffness times `stiffness_scale` (their ratios kept:
+// a cloth's flex springs stay a tenth of its structural ones) and neighbouring particles' masses
+// in the ratio `mass_ratio` (heavy / light, alternating along the index, in a checkerboard on a
 // cloth grid; the total mass kept): light and heavy particles mixed, a classic stressor.
-mysim::Model stressedModel(const mysim::Model& model, double stiffness, double mass_ratio);
+mysim::Model stressedModel(const mysim::Model& model, double stiffness_scale, double mass_ratio);
 
 struct SceneStabilitySettings {
   long steps = 4000;  // each trial runs this many steps (instability grows per step)

@@ -17,7 +17,7 @@ using GridProgress = std::function<void(int done, int total)>;
 struct StabilityMapSettings {
   std::vector<std::string> engines;     // specs, expanded (EngineRegistry::expand)
   std::vector<int> classic_iterations;  // bullet-classic's passes, each its own map
-  std::vector<double> stiffness;        // N/m, every spring (0: as the scene has them)
+  std::vector<double> stiffness_scales;  // each spring's stiffness times this (1: as written)
   std::vector<double> mass_ratios;      // heavy / light of neighbouring particles
   SceneStabilitySettings search;
   int jobs = 0;  // jobCount
@@ -27,7 +27,7 @@ struct StabilityMapSettings {
 struct StabilityMapCell {
   std::string engine;
   int classic_iterations = 0;  // 0: not bullet-classic
-  double stiffness = 0.0, mass_ratio = 1.0;
+  double stiffness_scale = 1.0, mass_ratio = 1.0;
   StabilityLimit limit;
   // Derived once for every reader: h_stable over theory, and h w_max, where bracketed.
   std::optional<double> ratio, h_w_max;

@@ -1,5 +1,6 @@
-"""The settled cloth: its shape in true proportions, the colliders under it, and where each engine
-puts each node relative to the first engine."""
+"""The cloth's last frame: its shape in true proportions, the colliders under it, and where each
+engine puts each node relative to the first engine; titled by whether the cloth has settled (a
+last frame of a moving or driven cloth is a snapshot, not a rest shape)."""
 import math
 from collections import defaultdict
 
@@ -34,8 +35,21 @@ def equal_aspect_3d(ax, points):
     ax.set_box_aspect((span[0], span[2], span[1]))
 
 
-def comparison_page(c):
+def state_words(state):
+    """What the last frame is, from the settling metric: (title phrase, short phrase)."""
+    if not state:
+        return "the last frame", "last frame"
+    if state["state"] == "settled":
+        return f"the cloth settled by t = {state['settled_at']:.3g} s", "settled"
+    if state["state"] == "driven":
+        return (f"the last frame at t = {state['last_frame']:.3g} s, driven (never at rest)",
+                "last frame, driven")
+    return f"the last frame at t = {state['last_frame']:.3g} s, still moving", "last frame, still moving"
+
+
+def comparison_page(c, state):
     colliders = c.get("model", {}).get("colliders") or []
+    title_words, short_words = state_words(state)
 
     def draw(fig, ctx):
         runs = [e for e in c["engines"] if e.get("final_state") and e.get("final")]
@@ -71,7 +85,7 @@ def comparison_page(c):
         ax.set_ylabel("z [m]", fontsize=8)
         ax.set_zlabel("y [m]", fontsize=8)
         ax.tick_params(labelsize=6)
-        ax.set_title(f"{reference_name}'s settled cloth, coloured by the largest distance of any engine",
+        ax.set_title(f"{reference_name}'s cloth ({short_words}), coloured by the largest distance of any engine",
                      fontsize=8.5)
         # The flat view that shows most: across the shape's two largest extents (from above for a
         # cloth lying on a sphere, from the front for a hanging one).
@@ -96,10 +110,13 @@ def comparison_page(c):
                                location="right", pad=0.02)
             bar.set_label(f"distance of a node to {reference_name}'s [m]", fontsize=8)
         notes = [f"Right: seen {view} ({names[u]}-{names[v]})."]
+        if state and state["state"] != "settled":
+            notes.append("The cloth is not at rest at this frame: these distances are of a snapshot of the motion, "
+                         "not of rest shapes (the trajectory difference, over every frame, is the comparison).")
         return notes + ([] if others else ["Only one engine finished: nothing to compare it with."])
 
     return Page(f"drape_{c['group'].replace('/', '_')}_{c['scene']}",
-                f"Where do the engines disagree on the settled cloth? ({c['scene']})",
+                f"Where do the engines disagree on {title_words}? ({c['scene']})",
                 "Left: the last frame of the first engine in true proportions (equal axes), the colliders as "
                 "wire frames where the scene has them, each triangle coloured by the largest distance any other "
                 "engine's node has from this one. Right: the nodes flat, across the shape's two largest extents, one "
@@ -110,4 +127,5 @@ def pages(manifest):
     chosen = [c for c in manifest["comparisons"] if c.get("model", {}).get("kind") == "cloth"
               and c["group"] != "energy"
               and sum(1 for e in c["engines"] if e.get("final_state") and e.get("final")) >= 1]
-    return [comparison_page(c) for c in chosen]
+    states = manifest.get("headlines", {}).get("cloth_states", {})
+    return [comparison_page(c, states.get(f"{c['group']}/{c['scene']}")) for c in chosen]

@@ -8,11 +8,14 @@ import performance_page
 import series_pages
 import stability_pages
 import trade_pages
+import verdict_page
 
 
 def pages(ctx):
     m = ctx.manifest
     result = dashboard.pages(ctx)
+    if m.get("headlines", {}).get("verdicts"):
+        result.insert(1, verdict_page.page(ctx))
     result += family_page.pages(m)
     result += trade_pages.pages(m)
     result += stability_pages.pages(m)

@@ -4,10 +4,17 @@
 // ctest-label RunStatus: physics
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
 #include <numbers>
 
 #include "compare/engines/engine_registry.h"
+#include "compare/io/report_headlines.h"
 #include "compare/metrics/closed_form.h"
+#include "compare/metrics/mirror_symmetry.h"
 #include "compare/metrics/drape_metric.h"
 #include "compare/metrics/energy_metric.h"
 #include "compare/metrics/penetration_metric.h"
@@ -181,6 +188,72 @@ TEST(ClosedForm, AnAtRestErrorNearTheMotionLeftSaysSo) {
   EXPECT_NEAR(moving->error, 1e-5, 1e-12);
   EXPECT_NEAR(*moving->motion_left, 2e-5, 1e-12);
   EXPECT_TRUE(moving->atMotionFloor());
+}
+
+// A fold that buckles the other way is no disagreement: cloth_hanging (pinned at its two top
+// corners) is symmetric across its columns, so one cloth bent out of plane on one side and the
+// mirror image of it are 0.1 m apart node by node and round-off apart mirror-aware, which says
+// it took the mirrored distance. A cloth with a third pin has no such plane.
+TEST(MirrorAwareDrape, AMirroredClothIsReportedAsMirroredAtRoundOff) {
+  auto scene = mysim::loadScene(std::string(SPRINGCHECK_SOURCE_DIR) + "/scenes/matched/cloth_hanging.json");
+  ASSERT_TRUE(scene) << scene.error();
+  const mysim::Model model = mysim::buildModel(*scene);
+  const auto mirror = mirrorSymmetry(model);
+  ASSERT_TRUE(mirror);
+  EXPECT_STREQ(mirror->across, "columns");
+  mysim::ParticleRows a = mysim::ParticleRows::Zero(model.particleCount(), 6);
+  for (int p = 0; p < model.particleCount(); ++p) a.block<1, 3>(p, 0) = mysim::at3(model.start_position, p).transpose();
+  for (int r = 0; r < 12; ++r) a(r * 12 + 2, 1) += 0.1;  // bent up along column 2 only
+  mysim::ParticleRows b = a;
+  b.leftCols<3>() = mirrored(*mirror, a.leftCols<3>());
+  auto run = [](const std::string& engine, const mysim::ParticleRows& f) {
+    mysim::RunRecord r;
+    r.times = {0.0};
+    r.frames = {f};
+    return EngineRun{engine, r};
+  };
+  const PairMetrics m = pairMetrics(model, run("a", a), run("b", b), EngineMetrics{}, EngineMetrics{});
+  EXPECT_NEAR(m.drape.max, 0.1, 1e-12);
+  EXPECT_LT(m.drapeMirrorAware(), 1e-14);
+  EXPECT_TRUE(m.mirrorCloser());
+  EXPECT_EQ(*metricValue(m, "drape_mirrored"), 1.0);
+  mysim::Model three = model;
+  three.pinned[5] = 1;
+  EXPECT_FALSE(mirrorSymmetry(three));
+}
+
+// Final-frame distances are rest-shape disagreements only where every engine settled: a cloth
+// still moving at its last frame, 165 mm apart there, is reported by its trajectory difference
+// as moving, and the rest-shape headline is the settled cloth's 1 um.
+TEST(ReportHeadlines, AMovingClothsFinalFrameIsNotARestShapeDisagreement) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("springcheck_headlines_" + std::to_string(::getpid()));
+  fs::create_directories(dir / "moving");
+  fs::create_directories(dir / "settled");
+  auto comparison = [](std::optional<double> settling, double drape, double trajectory) {
+    nlohmann::json engine = {{"engine", "x"}, {"settling_time", nullptr}};
+    if (settling) engine["settling_time"] = *settling;
+    nlohmann::json other = engine;
+    other["engine"] = "y";
+    return nlohmann::json{{"duration", 5.0},  // pairs against the first engine, as a drape page draws
+                          {"model", {{"kind", "cloth"}, {"driven", false}}},
+                          {"engines", {engine, other}},
+                          {"pairs", {{{"a", "x"}, {"b", "y"}, {"drape_max", drape},
+                                      {"trajectory_rms_max", trajectory}}}}};
+  };
+  std::ofstream(dir / "moving" / "comparison.json") << comparison(std::nullopt, 0.165, 0.09);
+  std::ofstream(dir / "settled" / "comparison.json") << comparison(3.5, 1e-6, 2e-3);
+  const nlohmann::json comparisons = {
+      {{"group", "suite"}, {"scene", "swinging"}, {"folder", (dir / "moving").string()}},
+      {{"group", "suite"}, {"scene", "resting"}, {"folder", (dir / "settled").string()}}};
+  const nlohmann::json h = reportHeadlines(comparisons, nlohmann::json::array());
+  EXPECT_EQ(h["worst_cloth_drape"]["scene"], "resting");
+  EXPECT_DOUBLE_EQ(h["worst_cloth_drape"]["value"].get<double>(), 1e-6);
+  EXPECT_EQ(h["worst_moving_cloth"]["scene"], "swinging");
+  EXPECT_DOUBLE_EQ(h["worst_moving_cloth"]["value"].get<double>(), 0.09);
+  EXPECT_EQ(h["cloth_states"]["suite/swinging"]["state"], "moving");
+  EXPECT_DOUBLE_EQ(h["cloth_states"]["suite/resting"]["settled_at"].get<double>(), 3.5);
+  fs::remove_all(dir);
 }
 
 TEST(SettlingMetric, TimeAfterWhichKineticEnergyStaysLowAndMaxStrain) {

@@ -242,6 +242,11 @@ std::expected<json, std::string> reportManifest(const std::string& results_dir,
   m["headlines"] = reportHeadlines(m["comparisons"], m["stability"]["scenes"]);
   const fs::path bench = results / "bench" / "bench.json";
   m["bench"] = fs::exists(bench) ? json(bench.string()) : json();
+  if (m["bench"].is_null()) {
+    // The benchmarks take minutes and are not part of the main job: say what makes the page.
+    missing(bench.string(), "SPRINGCHECK_OUT=" + r + " scripts/run-bench.sh (from a checkout)",
+            "performance: time per step and force evaluations of each engine");
+  }
   return m;
 }
 

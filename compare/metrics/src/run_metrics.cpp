@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "compare/metrics/mirror_symmetry.h"
 #include "compare/metrics/penetration_metric.h"
 #include "compare/metrics/sag_metric.h"
 #include "compare/metrics/settling_metric.h"
@@ -66,6 +67,9 @@ PairMetrics pairMetrics(const mysim::Model& model, const EngineRun& a, const Eng
   const mysim::ParticleRows& fa = a.record.frames.back();
   const mysim::ParticleRows& fb = b.record.frames.back();
   m.drape = nodeDistance(fa.leftCols<3>(), fb.leftCols<3>());
+  if (const auto mirror = mirrorSymmetry(model)) {
+    m.drape_mirrored = nodeDistance(fa.leftCols<3>(), mirrored(*mirror, fb.leftCols<3>()));
+  }
   if (!model.isCircle()) {
     m.surface = surfaceDistance(surfaceOf(model, fa), surfaceOf(model, fb));
     m.sag_difference = std::abs(ma.sag_lowest - mb.sag_lowest);
@@ -137,6 +141,13 @@ const std::vector<MetricInfo>& metricCatalog() {
        [](P m) { return V(m.drape.rms); }},
       {"drape_max", true, "m", "max per-node distance of the final shapes", nullptr,
        [](P m) { return V(m.drape.max); }},
+      {"drape_max_mirror_aware", true, "m",
+       "drape_max, or the distance to the other's mirror image across the scene's plane of "
+       "symmetry where that is smaller (a fold buckled the other way)",
+       nullptr, [](P m) { return V(m.drapeMirrorAware()); }},
+      {"drape_mirrored", true, "1/0",
+       "1 if drape_max_mirror_aware is the mirrored distance; empty without a symmetry plane",
+       nullptr, [](P m) { return m.drape_mirrored ? V(m.mirrorCloser() ? 1.0 : 0.0) : V(); }},
       {"chamfer", true, "m", "symmetric Chamfer distance of the final surfaces", nullptr,
        [](P m) { return V(m.surface.chamfer); }},
       {"hausdorff", true, "m", "Hausdorff distance of the final surfaces", nullptr,

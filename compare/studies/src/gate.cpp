@@ -19,7 +19,15 @@ bool GateReport::passed() const {
 namespace {
 
 CheckResult evaluate(const ToleranceCheck& check, const Comparison& c) {
-  CheckResult r{check, std::nullopt, false, ""};
+  CheckResult r{check, std::nullopt, false, "", "", {}, ""};
+  if (const MetricInfo* info = findMetric(check.metric)) r.unit = info->unit;
+  for (const std::string& engine : check.engines) {
+    std::string stepper;
+    for (const EngineRun& run : c.runs) {
+      if (run.engine == engine) stepper = run.record.integrator;
+    }
+    r.steppers.push_back(stepper);
+  }
   for (const Comparison::Refusal& refusal : c.refused) {
     if (std::find(check.engines.begin(), check.engines.end(), refusal.engine) !=
         check.engines.end()) {
@@ -47,6 +55,9 @@ CheckResult evaluate(const ToleranceCheck& check, const Comparison& c) {
       return r;
     }
     r.measured = metricValue(*m, check.metric);
+    if (check.metric == "closed_form_error" && m->closed_form) {
+      r.unit = m->closed_form->quantity == "pendulum period" ? "rel" : "m";  // closed_form.h
+    }
     if (check.metric == "closed_form_error" && m->closed_form && m->closed_form->atMotionFloor()) {
       r.note = "the run still moved " + formatNumber(*m->closed_form->motion_left, 2) +
                " m over its last tenth: an error this close to that is the motion left at the "
@@ -132,8 +143,7 @@ void printGate(std::ostream& out, const GateReport& report) {
     if (r.check.engines.size() > 1) engines += " ~ " + r.check.engines[1];
     std::string scene = r.check.scene.substr(r.check.scene.find_last_of('/') + 1);
     if (r.measured) {
-      const MetricInfo* info = findMetric(r.check.metric);
-      const std::string unit = info ? info->unit : "";
+      const std::string& unit = r.unit;
       std::snprintf(line, sizeof line, "%s  %-22s %-20s %-44s %11.4g <= %-11.4g %s",
                     r.passed ? "PASS" : "FAIL", scene.c_str(), r.check.metric.c_str(),
                     engines.c_str(), *r.measured, r.check.bound, unit.c_str());

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "compare/io/atomic_file.h"
+#include "compare/metrics/run_metrics.h"
 
 namespace springcheck {
 namespace {
@@ -134,6 +135,8 @@ void writeGateJson(std::ostream& out, const GateReport& report, const std::strin
                        {"passed", r.passed},
                        {"problem", r.problem},
                        {"note", r.note},
+                       {"steppers", r.steppers},
+                       {"unit", r.unit},
                        {"measured", r.measured ? nlohmann::json(*r.measured) : nlohmann::json()}});
   }
   const nlohmann::json all = {{"tolerances", tolerances}, {"checks", results}};

@@ -54,6 +54,14 @@ struct EngineMetrics {
 struct PairMetrics {
   std::string a, b;
   NodeDistance drape;           // last frames, node i against node i
+  // Where the scene has a plane of mirror symmetry (mirror_symmetry.h): the last frames, a
+  // against b's mirror image. A fold that buckled the other way is round-off apart here.
+  std::optional<NodeDistance> drape_mirrored;
+  // The smaller of the direct and the mirrored max distance, and whether it is the mirrored one.
+  double drapeMirrorAware() const {
+    return drape_mirrored ? std::min(drape.max, drape_mirrored->max) : drape.max;
+  }
+  bool mirrorCloser() const { return drape_mirrored && drape_mirrored->max < drape.max; }
   SurfaceDistance surface;      // last frames, topology-free
   double sag_difference = 0.0;  // |sag_lowest(a) - sag_lowest(b)|, m
   // Max over the frames both sampled of the per-frame RMS node distance.

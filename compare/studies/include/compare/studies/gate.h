@@ -17,6 +17,10 @@ struct CheckResult {
   bool passed = false;
   std::string problem;  // why there is no measurement (refused, blew up, metric undefined)
   std::string note;     // what the number does not say (a closed form at the motion left)
+  // What stepped each engine of the check, in its order ("rk4" for "mysim" on a scene written
+  // for RK4): "mysim" alone names the scene's integrator, which differs from scene to scene.
+  std::vector<std::string> steppers;
+  std::string unit;  // the measured value's ("m", "rel", "J", "1/0"); a closed form's its own
 };
 
 struct GateReport {

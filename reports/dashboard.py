@@ -121,7 +121,7 @@ def headlines(ctx):
                  for kind, key in (("linear", "linear_momentum_drift"), ("angular", "angular_momentum_drift"))
                  if key in body]
         lines.append((f"Momentum on {body['scene']} (a free body), worst relative drift: " + ", ".join(parts) + ".",
-                      None))
+                      "verdicts"))
     return lines
 
 

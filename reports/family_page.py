@@ -47,10 +47,10 @@ def family_page(sweep, bounds):
                                 color=BOUND_COLOURS[b % len(BOUND_COLOURS)],
                                 label=f"error <= {metres(bound['max_error'])}" if y == 0 else None)
                         ax.text(c["realtime_factor"] * 1.08, pos, f"{c['realtime_factor']:.3g}x: {setting(c)}",
-                                va="center", fontsize=6.5)
+                                va="center", fontsize=7)
                     else:
                         ax.text(1.05, pos, f"none <= {metres(bound['max_error'])} "
-                                f"(its best: {metres(closest[fam]['error'])})", va="center", fontsize=6.5,
+                                f"(its best: {metres(closest[fam]['error'])})", va="center", fontsize=7,
                                 color="0.35", style="italic")
                 if not any(True for _ in met):
                     notes.append(f"{os.path.basename(scene)}: no family meets {metres(bound['max_error'])}.")

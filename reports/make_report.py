@@ -47,8 +47,11 @@ def frame(fig, page, number, total, stamp, notes):
         lines = textwrap.wrap(caption, 200)
     fig.text(0.06, 0.155, "\n".join(lines), va="top", fontsize=8.5 if len(lines) <= 5 else 7,
              color="0.15")
+    if page.command:  # under the title: the page's own command, apart from the caption's text
+        fig.text(0.5, 0.922, f"reproduce: {page.command}", ha="center", fontsize=7, family="monospace",
+                 color="0.3")
     fig.text(0.06, 0.02, f"springcheck {stamp['version']} (commit {stamp['commit']})  ·  "
-             f"{stamp['date']}  ·  {stamp['machine']}\n{stamp['command']}", fontsize=6.5, color="0.4",
+             f"{stamp['date']}  ·  {stamp['machine']}\n{stamp['command']}", fontsize=7, color="0.4",
              va="bottom")
     fig.text(0.97, 0.02, f"page {number} of {total}", ha="right", va="bottom", fontsize=8, color="0.3")
 

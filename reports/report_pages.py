@@ -1,9 +1,12 @@
 """The report's pages, in order: what the manifest holds decides which exist."""
+import closed_form_page
 import dashboard
+import glossary_page
 import family_page
 import drape_pages
 import energy_pages
 import missing_page
+import page_commands
 import performance_page
 import series_pages
 import stability_pages
@@ -16,6 +19,8 @@ def pages(ctx):
     result = dashboard.pages(ctx)
     if m.get("headlines", {}).get("verdicts"):
         result.insert(1, verdict_page.page(ctx))
+    if any(c["group"] == "suite" for c in m["comparisons"]):
+        result.insert(2, closed_form_page.page())
     result += family_page.pages(m)
     result += trade_pages.pages(m)
     result += stability_pages.pages(m)
@@ -24,6 +29,7 @@ def pages(ctx):
     result += series_pages.pages(m)
     if m.get("bench"):
         result.append(performance_page.page(m["bench"]))
+    result.append(glossary_page.page())
     if m["missing"]:
         result.append(missing_page.page(m["missing"]))
-    return result
+    return page_commands.attach(result, m)

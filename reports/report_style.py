@@ -135,10 +135,11 @@ def draw_coincidences(ax, pairs, styles_of, markers=True):
 class Page:
     """One page: a key (its PNG's name, and how other pages refer to it), the question it answers
     (its title), how to read it (its caption), and draw(fig, ctx), which may return notes to add
-    to the caption (what it found while drawing, e.g. series that coincide)."""
+    to the caption (what it found while drawing, e.g. series that coincide), and the command that
+    makes the table it draws (printed on the page, so a figure says how to reproduce it)."""
 
-    def __init__(self, key, title, caption, draw):
-        self.key, self.title, self.caption, self.draw = key, title, caption, draw
+    def __init__(self, key, title, caption, draw, command=None):
+        self.key, self.title, self.caption, self.draw, self.command = key, title, caption, draw, command
 
 
 def plot_area(fig, rows=1, cols=1, right=None, top=None, left=None, **kw):

@@ -53,9 +53,11 @@ def pages(manifest):
     for n, part in enumerate(chunks(with_sag)):
         result.append(panels_page(
             f"sag_{n + 1}", "How far does each engine let the system sag, and when does it settle?",
-            "Drop of the lowest node below its start, per scene and engine, over the run. Lines that end "
+            "Depth of the lowest node below the pins (along gravity; with driven pins, below where they are "
+            "at that time; without pins, below the highest particle at the start), per scene and engine, over "
+            "the run. Lines that end "
             "early belong to runs that blew up; lines that part show engines that settle to different "
-            "shapes (the drape pages show where).", part, "sag_lowest", 1.0, "lowest point's drop [m]"))
+            "shapes (the drape pages show where).", part, "sag_lowest", 1.0, "lowest point below the pins [m]"))
     with_colliders = [c for c in manifest["comparisons"] if c["group"] not in ("energy",) and c.get("series")
                       and c.get("model", {}).get("colliders")]
     for n, part in enumerate(chunks(with_colliders)):

@@ -143,7 +143,7 @@ def scene_page(entry):
         map_ax.set_ylabel("largest stable step [s]")
         map_ax.set_title(f"the map at neighbour mass ratio {ratios[0]:g} (thin dashed: theory c / w_max)", fontsize=9)
         map_ax.grid(True, which="both", alpha=0.3)
-        map_ax.legend(fontsize=6.5, loc="lower left")
+        map_ax.legend(fontsize=7, loc="lower left")
         spread = ", ".join(f"{r:g}" for r in ratios)
         return [f"Right: one row per engine, one dot per stiffness scale, the dots of mass ratios {spread} "
                 "stacked top to bottom; a filled dot is the limit found, a hollow one a cell still stable at the "

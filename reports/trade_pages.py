@@ -58,6 +58,34 @@ def style_key(row):
     return ":".join(series_key(row).split(":")[:2])
 
 
+def step_of(rows, x_column):
+    """label -> {(x, error): dt}: each point's step, to label it."""
+    steps = defaultdict(dict)
+    for r in rows:
+        x, e = number(r[x_column]), number(r["error"])
+        if r["status"] == "ok" and x and e:
+            steps[label_of(r)][(x, e)] = number(r["dt"])
+    return steps
+
+
+def label_steps(ax, series, steps):
+    """Each series' first and last point marked with its step, so a point says which run it is."""
+    for label, pts in series.items():
+        for x, e in {pts[0], pts[-1]}:
+            dt = steps[label].get((x, e))
+            if dt:
+                ax.annotate(f"{dt * 1e3:.3g} ms", (x, e), xytext=(3, 3), textcoords="offset points",
+                            fontsize=6.5, color="0.3")
+
+
+def fitted_order(pts):
+    """The least-squares slope of log error over log step: the observed order of convergence."""
+    if len(pts) < 2:
+        return None
+    h, e = np.log([p[0] for p in pts]), np.log([p[1] for p in pts])
+    return float(np.polyfit(h, e, 1)[0])
+
+
 def collect(rows, x_column):
     """label -> sorted points, and label -> (style key, variant): a method's variants (dopri5's
     tolerances from the loosest, then parameter settings by name) take line styles in turn."""
@@ -88,7 +116,7 @@ def draw_precision_floors(ax, rows):
         ax.axhline(floor, ls=":", color="black", lw=1.2, label=f"float32 floor of {label}")
 
 
-def speed_accuracy_page(sweep):
+def speed_accuracy_page(sweep, bounds):
     def draw(fig, ctx):
         rows = read_csv(sweep["path"])
         # One panel per scene and stiffness: runs of different scenes never share a line.
@@ -110,6 +138,10 @@ def speed_accuracy_page(sweep):
                 continue
             notes += draw_series(ax, series, variants, ctx)
             draw_precision_floors(ax, part)
+            label_steps(ax, series, step_of(part, "wall_seconds"))
+            for k, bound in enumerate(sorted(bounds)):
+                ax.axhline(bound, color="#b00000", ls=("--", ":")[k % 2], lw=1.1,
+                           label=f"target {bound:g} m")
             front = pareto([p for pts in series.values() for p in pts])
             ax.step(*zip(*front), where="post", color="black", lw=2.2, alpha=0.5, label="Pareto front")
             ax.set_xlabel("wall time of the stepping, fastest of the repeats [s]")
@@ -126,7 +158,8 @@ def speed_accuracy_page(sweep):
                 f"Each point is one run of the sweep: its error against {reference} (max over frames of "
                 "the RMS node distance) against the wall time of its stepping. Lower left is better; the "
                 "grey staircase is the Pareto front, the runs no other run beats on both. Points on one "
-                "line are one engine or integrator at different steps.", draw)
+                "line are one engine or integrator at different steps (its first and last labelled with the "
+                "step); the red dashed lines are the error bounds the recommendation is asked for.", draw)
 
 
 def convergence_page(sweep):
@@ -146,12 +179,12 @@ def convergence_page(sweep):
                 continue
             notes += draw_series(ax, series, variants, ctx)
             draw_precision_floors(ax, part)
-            dts = sorted({p[0] for pts in series.values() for p in pts})
-            errors = [p[1] for pts in series.values() for p in pts]
-            anchor = math.exp(np.mean(np.log(errors)))
-            h = np.array([dts[0], dts[-1]])
-            for order, style in ((1, ":"), (2, "--"), (4, "-.")):
-                ax.loglog(h, anchor * (h / h[-1]) ** order, style, color="0.55", lw=1.1, label=f"slope {order}")
+            # Each series' observed order (least-squares slope), written at its finest step.
+            for label, pts in series.items():
+                order = fitted_order(pts)
+                if order is not None:
+                    ax.annotate(f"{order:.2f}", pts[0], xytext=(-4, 0), textcoords="offset points",
+                                ha="right", va="center", fontsize=7, color=ctx.styles.line(*variants[label])["color"])
             ax.set_xlabel("step dt [s]")
             refs = sorted({r["reference"] for r in part if r.get("reference")})
             ax.set_ylabel(f"error against {', '.join(refs) or 'the reference'} [m]")
@@ -165,11 +198,17 @@ def convergence_page(sweep):
     return Page(f"convergence_{sweep['name']}",
                 f"Does each method converge at its order? ({sweep['name']})",
                 f"Error of every finished run against {against}, over the step, log-log, at the sweep's "
-                "lowest stiffness. A line parallel to the grey 'slope k' guide converges at order k; a "
-                "line that flattens has hit the error of its reference or its solver tolerance.", draw)
+                "lowest stiffness. The number left of each line's finest step is its observed order of "
+                "convergence, the least-squares slope of log error over log step (1 for Euler-type schemes, "
+                "2 for Verlet and Heun, 4 for RK4 is the theory); a line that flattens has hit the error of "
+                "its reference or its solver tolerance, and its fitted order then reads low.", draw)
 
 
 def pages(manifest):
     sweeps = manifest["sweeps"]
     shared = [s for s in sweeps if not s["self_reference"]]
-    return [speed_accuracy_page(s) for s in shared] + [convergence_page(s) for s in sweeps]
+    # Per sweep, the error bounds its recommendations were asked for.
+    bounds = defaultdict(set)
+    for b in manifest.get("recommendation_bounds") or []:
+        bounds[b["sweep"]].add(b["max_error"])
+    return [speed_accuracy_page(s, bounds[s["name"]]) for s in shared] + [convergence_page(s) for s in sweeps]

@@ -16,8 +16,9 @@ def verdict_line(v):
     parts = []
     if "closest" in v:
         c = v["closest"]
+        plural = "s" if c["scenes"] != 1 else ""
         parts.append(f"closest to {c['engine']} on settled cloths (median {c['median'] * 1e3:.2g} mm over "
-                     f"{c['scenes']})")
+                     f"{c['scenes']} cloth{plural})")
     if "closed_form" in v:
         parts.append(f"worst closed-form error {v['closed_form']['value']:.2g} ({v['closed_form']['scene']})")
     if "energy_drift" in v:
@@ -29,6 +30,17 @@ def verdict_line(v):
         worst = max(momenta, key=lambda kv: kv[1]["value"])
         word = "conserves momentum" if worst[1]["value"] < 1e-6 else "loses momentum"
         parts.append(f"{word}: worst {worst[0].replace('_', ' ')} drift {worst[1]['value']:.1g} ({worst[1]['scene']})")
+    for rule in v.get("step_rules", [])[:1]:  # the first mapped scene (the main job's chain_swing)
+        if "theory_h" in rule and "w_max" in rule:
+            c = rule["theory_h"] * rule["w_max"]
+            measured = f", measured {rule['h_stable'] * 1e3:.3g} ms" if rule["status"] == "bracketed" else ""
+            parts.append(f"step rule on {rule['scene']}: h < {c:.3g} / w_max = {c:.3g} / {rule['w_max']:.4g} rad/s "
+                         f"= {rule['theory_h'] * 1e3:.3g} ms{measured}")
+        elif rule["status"] == "stable-at-max":
+            parts.append(f"on {rule['scene']}: stable at every step tried (up to h w_max = 30)")
+        elif rule["status"] == "bracketed" and "h_stable" in rule and "w_max" in rule:
+            parts.append(f"largest stable step on {rule['scene']}: {rule['h_stable'] * 1e3:.3g} ms "
+                         f"(h w_max = {rule['h_stable'] * rule['w_max']:.3g}; no linear theory for its scheme)")
     if v.get("not_ok"):
         parts.append(f"did not finish cleanly on {', '.join(v['not_ok'])}")
     return f"{v['engine']}: " + "; ".join(parts) + "."
@@ -57,16 +69,16 @@ def draw(fig, ctx):
     for i, e in enumerate(engines):
         for j, s in enumerate(scenes):
             if math.isfinite(values[i, j]):
-                ax.text(j, i, f"{values[i, j]:.0e}", ha="center", va="center", fontsize=5.8,
+                ax.text(j, i, f"{values[i, j]:.0e}", ha="center", va="center", fontsize=6.5,
                         color="white" if norm(values[i, j]) < 0.55 else "black")
             elif s["values"].get(e) == 0.0:  # the scene's reference engine, or exactly equal to it
                 ax.text(j, i, "ref" if s["measure"] != "closed form" else "0", ha="center", va="center",
-                        fontsize=6, color="0.3")
+                        fontsize=7, color="0.3")
             if scenes[j]["not_ok"] and engines[i] in scenes[j]["not_ok"]:
                 ax.add_patch(Rectangle((j - 0.5, i - 0.5), 1, 1, fill=False, edgecolor="red", lw=1.5))
     marks = {"settled": "settled", "moving": "moving", "driven": "driven"}
     labels = [f"{s['scene']}\n{marks.get(s['state']['state'], '')}, {s['measure'].split(' vs ')[0]}" for s in scenes]
-    ax.set_xticks(range(len(scenes)), labels, rotation=40, ha="right", rotation_mode="anchor", fontsize=6.2)
+    ax.set_xticks(range(len(scenes)), labels, rotation=40, ha="right", rotation_mode="anchor", fontsize=7)
     ax.set_yticks(range(len(engines)), engines, fontsize=7.5)
     bar = fig.colorbar(image, ax=ax, shrink=0.8, pad=0.01)
     bar.set_label("error [m; the pendulum's period: relative]", fontsize=7.5)

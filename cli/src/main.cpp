@@ -5,12 +5,14 @@
 
 #include "commands.h"
 #include "compare/engines/interrupts.h"
+#include "compare/io/invocation.h"
 #include "springcheck_commit.h"
 
 int main(int argc, char** argv) {
   // First, before any thread starts: SIGINT and SIGTERM stop the engines springcheck started
   // and remove their scratch before it exits 128 + n (compare/engines/interrupts.h).
   springcheck::handleInterrupts();
+  springcheck::setInvocation(argc, argv);
   // A reader that goes away (`springcheck stability | head`) must not kill the run halfway: the
   // results it writes are files, written whole; only the printing is lost.
   std::signal(SIGPIPE, SIG_IGN);

@@ -123,18 +123,24 @@ std::expected<json, std::string> parseJson(const std::string& text, const std::s
   return std::move(sax.result);
 }
 
+// "a scene file", "an engines file": the article the noun takes.
+static std::string withArticle(const std::string& what) {
+  const bool vowel = !what.empty() && std::string("aeiou").find(what.front()) != std::string::npos;
+  return (vowel ? "an " : "a ") + what;
+}
+
 std::expected<json, std::string> readJsonFile(const std::string& path, const std::string& what) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const auto status = fs::status(path, ec);
   if (ec || !fs::exists(status)) {
-    return std::unexpected(clip(path, 200) + ": no such file (expected a " + what + ")");
+    return std::unexpected(clip(path, 200) + ": no such file (expected " + withArticle(what) + ")");
   }
   if (fs::is_directory(status)) {
-    return std::unexpected(path + ": is a directory (expected a " + what + ")");
+    return std::unexpected(path + ": is a directory (expected " + withArticle(what) + ")");
   }
   if (!fs::is_regular_file(status)) {
-    return std::unexpected(path + ": not a regular file (expected a " + what + ")");
+    return std::unexpected(path + ": not a regular file (expected " + withArticle(what) + ")");
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) return std::unexpected(path + ": cannot open the " + what);

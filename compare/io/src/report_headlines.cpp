@@ -64,7 +64,8 @@ std::optional<double> numberIn(const json& j, const char* key) {
 }
 
 // A cloth comparison's state at its last frame: settled (every engine's kinetic energy stayed
-// below 1e-4 of its peak from some time on: the latest such time), driven (wind or moving pins:
+// below 1e-4 of its peak from some time on, the latest such time, at most 90 % into the run: a
+// cloth that got there in the last tenth has not shown it stays), driven (wind or moving pins:
 // it never rests), or still moving at the end.
 json clothState(const json& comparison) {
   const bool driven = comparison["model"].value("driven", false);
@@ -73,7 +74,7 @@ json clothState(const json& comparison) {
   double settled = 0.0;
   for (const json& e : comparison["engines"]) {
     const auto t = numberIn(e, "settling_time");
-    if (!t) return {{"state", "moving"}, {"last_frame", end}};
+    if (!t || *t > 0.9 * end) return {{"state", "moving"}, {"last_frame", end}};
     settled = std::max(settled, *t);
   }
   return {{"state", "settled"}, {"settled_at", settled}, {"last_frame", end}};
@@ -164,7 +165,7 @@ json ranking(const json& comparisons) {
 // One line per engine over the suite: the engine it is closest to on settled cloths, its worst
 // energy drift on a scene nothing drives or damps (on a damped one the drift is the damping), its worst momentum drift on a free body, its worst
 // closed-form error. Numbers only; the report words them.
-json verdicts(const json& comparisons) {
+json verdicts(const json& comparisons, const json& stability_scenes) {
   std::map<std::string, json> by_engine;
   std::map<std::string, std::map<std::string, std::vector<double>>> closeness;
   std::vector<std::string> order;
@@ -203,9 +204,27 @@ json verdicts(const json& comparisons) {
       closeness[p["b"]][p["a"]].push_back(*d);
     }
   }
+  // Each engine's step rule on each mapped scene as written (stiffness scale 1, the lowest mass
+  // ratio): h < c / w_max with this scene's w_max, and the largest stable step measured.
+  std::map<std::string, json> rules;
+  for (const json& entry : stability_scenes) {
+    const std::vector<Row> rows = readTable(entry["path"]);
+    double lowest = INFINITY;
+    for (const Row& r : rows) lowest = std::min(lowest, number(r.at("mass_ratio")).value_or(INFINITY));
+    for (const Row& r : rows) {
+      if (number(r.at("mass_ratio")) != lowest || number(r.at("stiffness_scale")) != 1.0) continue;
+      if (!r.at("classic_iterations").empty() && r.at("classic_iterations") != "10") continue;
+      json rule = {{"scene", entry["scene"]}, {"status", r.at("status")}};
+      for (const char* key : {"w_max", "theory_h", "h_stable"}) {
+        if (auto v = number(r.at(key))) rule[key] = *v;
+      }
+      rules[r.at("engine")].push_back(rule);
+    }
+  }
   json list = json::array();
   for (const std::string& name : order) {
     json v = by_engine[name];
+    if (rules.count(name)) v["step_rules"] = rules[name];
     std::string nearest;
     double best = INFINITY;
     for (const auto& [other, distances] : closeness[name]) {
@@ -301,7 +320,7 @@ json reportHeadlines(const json& comparisons, const json& stability_scenes) {
           {"worst_moving_cloth", cloths["moving"]},
           {"cloth_states", cloths["states"]},
           {"ranking", ranking(comparisons)},
-          {"verdicts", verdicts(comparisons)},
+          {"verdicts", verdicts(comparisons, stability_scenes)},
           {"momentum", momentum(comparisons)},
           {"stability", stability(stability_scenes)}};
 }

@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "compare/io/csv.h"
+#include "compare/io/invocation.h"
 #include "compare/io/report_headlines.h"
 
 namespace springcheck {
@@ -103,6 +104,7 @@ std::expected<json, std::string> comparisons(const fs::path& results) {
     json entry = {{"group", fs::relative(dir.parent_path(), results).string()},
                   {"scene", c["scene"]},
                   {"scene_file", c.value("scene_file", "")},
+                  {"command", c.value("command", json())},
                   {"folder", dir.string()},
                   {"model", c.value("model", json::object())},
                   {"energy_reference", c.value("energy_reference", json())},
@@ -164,7 +166,8 @@ std::expected<json, std::string> reportManifest(const std::string& results_dir,
   for (const fs::path& table : filesIn(results / "sweep", "", ".csv")) {
     const std::string name = table.stem().string();
     const bool self = firstValue(table, "reference").starts_with("self");
-    m["sweeps"].push_back({{"name", name}, {"path", table.string()}, {"self_reference", self}});
+    m["sweeps"].push_back({{"name", name}, {"path", table.string()}, {"self_reference", self},
+                           {"command", invocationBeside(table.string())}});
     const fs::path rec = results / "recommend" / (name + ".json");
     if (fs::exists(rec)) {
       m["recommendations"].push_back({{"sweep", name}, {"path", rec.string()}});
@@ -200,6 +203,7 @@ std::expected<json, std::string> reportManifest(const std::string& results_dir,
   for (const char* table : {"stability", "extremes"}) {
     const fs::path path = stability / (std::string(table) + ".csv");
     m["stability"][table] = fs::exists(path) ? json(path.string()) : json();
+    m["stability"][std::string(table) + "_command"] = invocationBeside(path.string());
   }
   if (m["stability"]["stability"].is_null() || m["stability"]["extremes"].is_null()) {
     missing((stability / "stability.csv").string(),
@@ -210,7 +214,8 @@ std::expected<json, std::string> reportManifest(const std::string& results_dir,
   for (const fs::path& table : filesIn(stability, "stability_", ".csv")) {
     m["stability"]["scenes"].push_back(
         {{"scene", table.stem().string().substr(std::string("stability_").size())},
-         {"path", table.string()}});
+         {"path", table.string()},
+         {"command", invocationBeside(table.string())}});
   }
   if (m["stability"]["scenes"].empty()) {
     missing((stability / "stability_chain_swing.csv").string(),

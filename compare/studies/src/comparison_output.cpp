@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "compare/io/atomic_file.h"
+#include "compare/io/invocation.h"
 #include "compare/io/whole_folder.h"
 #include "compare/io/csv.h"
 #include "compare/io/run_output.h"
@@ -189,6 +190,8 @@ json comparisonJson(const Comparison& c) {
     j["refused"].push_back({{"engine", r.engine}, {"reason", r.reason}});
   }
   j["model"] = modelJson(c.model);
+  // The command that made it (the report prints it under its figures); null from the library.
+  j["command"] = invocation().empty() ? json() : json(invocation());
   j["energy_reference"] = c.energy_reference ? json(c.runs[*c.energy_reference].engine) : json();
   for (std::size_t r = 0; r < c.engines.size(); ++r) {
     json e = metricsJson(c.engines[r]);

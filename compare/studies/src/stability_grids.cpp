@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "compare/io/atomic_file.h"
+#include "compare/io/invocation.h"
 #include "compare/io/csv.h"
 #include "compare/io/text_format.h"
 #include "compare/studies/parallel_jobs.h"
@@ -78,7 +79,7 @@ std::vector<StabilityMapCell> stabilityMaps(const EngineRegistry& registry,
 std::expected<void, std::string> writeStabilityMaps(const std::string& path,
                                                     const std::string& scene_name,
                                                     const std::vector<StabilityMapCell>& cells) {
-  return writeFileAtomically(path, [&](std::ostream& out) {
+  auto written = writeFileAtomically(path, [&](std::ostream& out) {
     out.precision(8);
     out << "system,engine,classic_iterations,stiffness_scale,mass_ratio,w_max,h_stable,h_unstable,"
            "status,unstable_check,theory_h,ratio,h_w_max\n";
@@ -91,6 +92,8 @@ std::expected<void, std::string> writeStabilityMaps(const std::string& path,
           << cell(l.theory) << ',' << cell(c.ratio) << ',' << cell(c.h_w_max) << '\n';
     }
   });
+  if (!written) return written;
+  return writeInvocationBeside(path);
 }
 
 std::vector<OscillatorCell> oscillatorGrid(const EngineRegistry& registry,
@@ -125,7 +128,7 @@ std::vector<OscillatorCell> oscillatorGrid(const EngineRegistry& registry,
 std::expected<void, std::string> writeOscillatorGrid(const std::string& path,
                                                      const std::vector<OscillatorCell>& cells,
                                                      double damping_ratio) {
-  return writeFileAtomically(path, [&](std::ostream& out) {
+  auto written = writeFileAtomically(path, [&](std::ostream& out) {
     out.precision(8);
     out << "system,integrator,stiffness,mass,omega,damping_ratio,h_stable,h_unstable,status,"
            "theory_h,ratio\n";
@@ -136,6 +139,8 @@ std::expected<void, std::string> writeOscillatorGrid(const std::string& path,
           << l.status << ',' << cell(l.theory) << ',' << cell(c.ratio) << '\n';
     }
   });
+  if (!written) return written;
+  return writeInvocationBeside(path);
 }
 
 }  // namespace springcheck

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "compare/io/atomic_file.h"
+#include "compare/io/invocation.h"
 #include "compare/io/csv.h"
 #include "compare/io/text_format.h"
 
@@ -200,10 +201,12 @@ std::expected<void, std::string> writeSweepTable(const std::string& path,
                                                  std::vector<SweepRow> rows) {
   std::sort(rows.begin(), rows.end(),
             [](const SweepRow& a, const SweepRow& b) { return a.c.id < b.c.id; });
-  return writeFileAtomically(path, [&](std::ostream& out) {
+  auto written = writeFileAtomically(path, [&](std::ostream& out) {
     out << header() << '\n';
     for (const SweepRow& row : rows) out << sweepLine(row) << '\n';
   });
+  if (!written) return written;
+  return writeInvocationBeside(path);  // the report prints it under the table's figures
 }
 
 std::expected<int, std::string> mergeSweepTables(const std::vector<std::string>& inputs,

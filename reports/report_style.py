@@ -112,16 +112,15 @@ def coincidence_note(group):
 
 def draw_coincidences(ax, pairs, styles_of, markers=True):
     """Redraws the hidden member of each coinciding pair as larger hollow markers (or, for dense
-    time series, a wide translucent band), so both show, and says so on the axes."""
+    time series, a wide translucent band), so both show, and returns the notes saying so."""
     if not pairs:
         return []
     groups = coincident_groups(pairs)
     notes = [coincidence_note(g) for g in groups]
     pairs = [(None, b) for g in groups for b in g[1:]]
-    how = "hollow markers" if markers else "wide pale band"
-    ax.text(0.99, 0.01 if markers else 0.99, "\n".join(notes) + f"\n({how}: the series underneath)",
-            transform=ax.transAxes, ha="right", va="bottom" if markers else "top", fontsize=7,
-            bbox=dict(facecolor="#fff8dc", edgecolor="#d4b106", alpha=0.95))
+    # Said in the caption (the notes), not in a box on the axes, where it would cover data.
+    how = "hollow markers" if markers else "a wide pale band"
+    notes = [n.removesuffix(".") + f" (drawn as {how}: the series underneath)." for n in notes]
     for i, (_, b) in enumerate(pairs):
         xs, ys, kw = styles_of(b)
         if markers:

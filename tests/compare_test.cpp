@@ -138,6 +138,38 @@ TEST(EnergyMetric, TheCircleDriftsByForwardEulersRadiusGrowth) {
   EXPECT_FALSE(metricValue(EngineMetrics{}, "energy_rise"));
 }
 
+// The two-pin elastic catenary is the chain's equilibrium: at every free node of the closed form
+// the two springs' forces and the weight add up to nothing (1e-12 of the weight), level pins or
+// not; and the level one is symmetric about its middle.
+TEST(ClosedForm, TheTwoPinCatenaryBalancesEveryNode) {
+  auto scene = mysim::loadScene(std::string(SPRINGCHECK_SOURCE_DIR) + "/scenes/matched/chain_catenary.json");
+  ASSERT_TRUE(scene) << scene.error();
+  for (double raised : {0.0, 0.3}) {
+    mysim::Model model = mysim::buildModel(*scene);
+    const int last = model.particleCount() - 1;
+    mysim::at3(model.start_position, last) += mysim::Vec3(-0.2, raised, 0.0);  // slack, and higher
+    const auto nodes = twoPinCatenaryNodes(model);
+    ASSERT_TRUE(nodes);
+    ASSERT_EQ(static_cast<int>(nodes->size()), model.particleCount());
+    EXPECT_LT(((*nodes)[last] - mysim::at3(model.start_position, last)).norm(), 1e-12);
+    const double weight = model.mass[1] * model.gravity.norm();
+    for (int j = 1; j < last; ++j) {
+      mysim::Vec3 f = model.mass[j] * model.gravity;
+      for (int q : {j - 1, j + 1}) {
+        const mysim::Vec3 d = (*nodes)[q] - (*nodes)[j];
+        const mysim::Spring& sp = model.springs[std::min(j, q)];
+        f += sp.stiffness * (d.norm() - sp.rest_length) * d.normalized();
+      }
+      EXPECT_LT(f.norm(), 1e-12 * weight) << "node " << j << ", right pin raised " << raised;
+    }
+    if (raised == 0.0) {
+      for (int j = 0; j <= last; ++j) {
+        EXPECT_NEAR((*nodes)[j].y(), (*nodes)[last - j].y(), 1e-12);
+      }
+    }
+  }
+}
+
 TEST(ClosedForm, EllipticKKnownValues) {
   EXPECT_NEAR(ellipticK(0.0), std::numbers::pi / 2, 1e-15);
   EXPECT_NEAR(ellipticK(std::sqrt(0.5)), 1.8540746773013719, 1e-14);  // the 90-degree pendulum

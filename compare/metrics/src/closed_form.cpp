@@ -55,6 +55,21 @@ std::optional<UniformChain> uniformChain(const mysim::Model& model) {
       (next - origin).normalized()};
 }
 
+// How far the nodes moved from the frame nearest to 90 % of the run to the last: the motion still
+// going on, which an at-rest closed form cannot tell from error.
+double motionLeft(const mysim::RunRecord& run) {
+  const double t_end = run.times.back();
+  std::size_t earlier = 0;
+  for (std::size_t f = 0; f < run.times.size(); ++f) {
+    if (std::abs(run.times[f] - 0.9 * t_end) < std::abs(run.times[earlier] - 0.9 * t_end)) earlier = f;
+  }
+  double moved = 0.0;
+  for (int j = 0; j < run.frames.back().rows(); ++j) {
+    moved = std::max(moved, (run.frames.back().row(j).head<3>() - run.frames[earlier].row(j).head<3>()).norm());
+  }
+  return moved;
+}
+
 std::optional<ClosedFormError> chainSagError(const mysim::Model& model, const UniformChain& c,
                                              const mysim::RunRecord& run) {
   const int n = c.particles - 1;
@@ -69,17 +84,7 @@ std::optional<ClosedFormError> chainSagError(const mysim::Model& model, const Un
     end = drop;
   }
   ClosedFormError e{"hanging chain at rest", worst, end};
-  // The frame nearest to 90 % of the run against the last: the motion still going on.
-  const double t_end = run.times.back();
-  std::size_t earlier = 0;
-  for (std::size_t f = 0; f < run.times.size(); ++f) {
-    if (std::abs(run.times[f] - 0.9 * t_end) < std::abs(run.times[earlier] - 0.9 * t_end)) earlier = f;
-  }
-  double moved = 0.0;
-  for (int j = 1; j <= n; ++j) {
-    moved = std::max(moved, (run.frames.back().row(j).head<3>() - run.frames[earlier].row(j).head<3>()).norm());
-  }
-  e.motion_left = moved;
+  e.motion_left = motionLeft(run);
   return e;
 }
 
@@ -107,7 +112,74 @@ std::optional<ClosedFormError> pendulumPeriodError(const mysim::Model& model, co
   return ClosedFormError{"pendulum period", std::abs(measured / period - 1.0), period};
 }
 
+// The elastic chain hanging between two pins, at rest: segments s = 0..S-1 of rest length L and
+// stiffness k between equal masses m. Each free node's balance makes the tension vectors
+// T_s = (H, V + s m g) in the plane of the span (e1 across, e2 up): the horizontal part is one H,
+// the vertical part grows by m g a node. Segment s is T_s / |T_s| long L + |T_s| / k, and the
+// segments must add up to the span D between the pins:
+//   F(H, V) = sum_s (L / |T_s| + 1 / k) T_s - D = 0,
+// solved by Newton with its exact Jacobian sum_s [(L/|T| + 1/k) I - L T T^T / |T|^3] to 1e-13 of
+// |D| (the discrete closed form: any N, any slack or stretch, no small-sag approximation).
+std::optional<std::vector<mysim::Vec3>> twoPinCatenary(const mysim::Model& model, const UniformChain& c) {
+  const int segments = c.particles - 1;
+  const double g = model.gravity.norm(), m = c.particle_mass, L = c.rest_length, k = c.stiffness;
+  const mysim::Vec3 up = -model.gravity / g;
+  const mysim::Vec3 left = mysim::at3(model.start_position, 0);
+  const mysim::Vec3 span = mysim::at3(model.start_position, segments) - left;
+  const mysim::Vec3 across3 = span - span.dot(up) * up;
+  if (across3.norm() < 1e-9 * std::max(1.0, span.norm())) return std::nullopt;  // one above the other
+  const mysim::Vec3 e1 = across3.normalized();
+  const Eigen::Vector2d D(span.dot(e1), span.dot(up));
+  // Start: a taut line's tension across, the weight shared by the two pins.
+  Eigen::Vector2d x(k * std::max(1e-3 * L, D.x() / segments), -0.5 * (segments - 1) * m * g);
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    Eigen::Vector2d F = -D;
+    Eigen::Matrix2d J = Eigen::Matrix2d::Zero();
+    for (int s = 0; s < segments; ++s) {
+      const Eigen::Vector2d T(x.x(), x.y() + s * m * g);
+      const double t = T.norm();
+      F += (L / t + 1.0 / k) * T;
+      J += (L / t + 1.0 / k) * Eigen::Matrix2d::Identity() - (L / (t * t * t)) * T * T.transpose();
+    }
+    if (F.norm() < 1e-13 * D.norm()) {
+      std::vector<mysim::Vec3> nodes{left};
+      for (int s = 0; s < segments; ++s) {
+        const Eigen::Vector2d T(x.x(), x.y() + s * m * g);
+        const Eigen::Vector2d step = (L / T.norm() + 1.0 / k) * T;
+        nodes.push_back(nodes.back() + step.x() * e1 + step.y() * up);
+      }
+      return nodes;
+    }
+    Eigen::Vector2d dx = J.lu().solve(-F);
+    // Keep the tension across positive (a chain pulls, never pushes).
+    while (x.x() + dx.x() <= 0.0) dx *= 0.5;
+    x += dx;
+  }
+  return std::nullopt;
+}
+
+std::optional<ClosedFormError> twoPinCatenaryError(const mysim::Model& model, const UniformChain& c,
+                                                   const mysim::RunRecord& run) {
+  const auto nodes = twoPinCatenary(model, c);
+  if (!nodes) return std::nullopt;
+  const mysim::Vec3 up = -model.gravity.normalized();
+  double worst = 0.0, deepest = 0.0;
+  for (int j = 1; j + 1 < c.particles; ++j) {
+    worst = std::max(worst, (run.frames.back().row(j).head<3>().transpose() - (*nodes)[j]).norm());
+    deepest = std::max(deepest, ((*nodes)[0] - (*nodes)[j]).dot(up));
+  }
+  ClosedFormError e{"two-pin catenary at rest", worst, deepest};
+  e.motion_left = motionLeft(run);
+  return e;
+}
+
 }  // namespace
+
+std::optional<std::vector<mysim::Vec3>> twoPinCatenaryNodes(const mysim::Model& model) {
+  const std::optional<UniformChain> chain = uniformChain(model);
+  if (!chain || model.gravity.norm() == 0.0) return std::nullopt;
+  return twoPinCatenary(model, *chain);
+}
 
 std::optional<ClosedFormError> closedFormError(const mysim::Model& model,
                                                const mysim::RunRecord& run) {
@@ -116,10 +188,16 @@ std::optional<ClosedFormError> closedFormError(const mysim::Model& model,
   const std::optional<UniformChain> chain = uniformChain(model);
   std::vector<char> only_first_pinned(model.particleCount(), 0);
   if (!only_first_pinned.empty()) only_first_pinned[0] = 1;
-  if (!chain || model.pinned != only_first_pinned || model.gravity.norm() == 0.0 || model.wind ||
-      model.pin_motion || !model.colliders.empty()) {
+  if (!chain || model.gravity.norm() == 0.0 || model.wind || model.pin_motion ||
+      !model.colliders.empty()) {
     return std::nullopt;
   }
+  std::vector<char> both_ends_pinned(model.particleCount(), 0);
+  if (model.particleCount() >= 3) {
+    both_ends_pinned.front() = both_ends_pinned.back() = 1;
+    if (model.pinned == both_ends_pinned) return twoPinCatenaryError(model, *chain, run);
+  }
+  if (model.pinned != only_first_pinned) return std::nullopt;
   const double alignment = chain->direction.dot(model.gravity.normalized());
   if (alignment > 1.0 - 1e-12) return chainSagError(model, *chain, run);
   if (chain->particles == 2 && model.drag == 0.0 && chain->damping == 0.0) {

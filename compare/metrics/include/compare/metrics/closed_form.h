@@ -12,7 +12,10 @@ namespace springcheck {
 //  - a chain hanging straight down along gravity from one pin: max |y_j - y_j(closed form)| at
 //    the last frame, y_j = -[j L0 + (m g / k) j (2N - j + 1) / 2];
 //  - a pendulum (chain of two, one pinned): relative error of the period measured from the
-//    x-crossings of the bob against the rigid pendulum's T = 4 sqrt(L / g) K(sin(theta0 / 2)).
+//    x-crossings of the bob against the rigid pendulum's T = 4 sqrt(L / g) K(sin(theta0 / 2));
+//  - a chain pinned at both ends (not one above the other): max |x_j - x_j(closed form)| at the
+//    last frame, x_j the discrete elastic catenary (closed_form.cpp: the tension's horizontal part
+//    and the first segment's vertical part solved by Newton to 1e-13 of the span).
 struct ClosedFormError {
   std::string quantity;  // what was compared
   double error = 0.0;    // m for positions, relative for the period
@@ -28,6 +31,10 @@ struct ClosedFormError {
 // springs and masses, pinned at particle 0 only, with no wind, pin motion or sphere.
 std::optional<ClosedFormError> closedFormError(const mysim::Model& model,
                                                const mysim::RunRecord& run);
+
+// The discrete elastic catenary's nodes, pins included, for a uniform chain pinned at its two
+// ends (nothing when the model is not one, or the pins are one above the other).
+std::optional<std::vector<mysim::Vec3>> twoPinCatenaryNodes(const mysim::Model& model);
 
 // Complete elliptic integral of the first kind K(k), by the arithmetic-geometric mean.
 double ellipticK(double k);

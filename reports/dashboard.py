@@ -103,8 +103,8 @@ def headlines(ctx):
     h = m.get("headlines", {})
     worst = h.get("worst_cloth_drape")
     if worst:
-        mirrored = (" (mirror-aware: the smaller is the distance to the other's mirror image, a fold "
-                    "buckled the other way)" if worst.get("mirrored") else " (mirror-aware)")
+        mirrored = (" (to the other's mirror image: the folds buckled opposite ways)" if worst.get("mirrored")
+                    else " (direct; mirror-aware: the shapes are not mirror images)")
         lines.append((f"Largest disagreement between settled cloths: {worst['value'] * 1e3:.3g} mm (max node "
                       f"distance) between {worst['a']} and {worst['b']} on {worst['scene']}, settled by "
                       f"t = {worst['state']['settled_at']:.3g} s{mirrored}.",

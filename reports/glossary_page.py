@@ -23,9 +23,9 @@ TERMS = [
                 "of shapes."),
     ("moving, driven", "a cloth not at rest at its last frame (still swinging), or one wind or moving pins "
                        "keep in motion: compared by trajectory over every frame, not by the last frame."),
-    ("mirror-aware", "the smaller of the direct node distance and the distance to the other engine's mirror "
-                     "image across the scene's plane of symmetry (found from the model): a fold that buckled "
-                     "the other way is not a disagreement."),
+    ("mirror-aware", "the direct node distance, or the distance to the other engine's mirror image across the "
+                     "scene's plane of symmetry (found from the model) where that is under half of it: a fold "
+                     "that buckled the other way is not a disagreement."),
     ("drape, drape_max", "node-by-node distance between two engines' last frames (max over nodes)."),
     ("trajectory RMS", "the RMS node distance at each frame both runs sampled, its maximum over the run."),
     ("closed form", "an exact answer the scene has: the circle, the pendulum's period (elliptic integral), the "

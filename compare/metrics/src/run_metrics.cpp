@@ -143,7 +143,7 @@ const std::vector<MetricInfo>& metricCatalog() {
        [](P m) { return V(m.drape.max); }},
       {"drape_max_mirror_aware", true, "m",
        "drape_max, or the distance to the other's mirror image across the scene's plane of "
-       "symmetry where that is smaller (a fold buckled the other way)",
+       "symmetry where that is under half of it (a fold buckled the other way)",
        nullptr, [](P m) { return V(m.drapeMirrorAware()); }},
       {"drape_mirrored", true, "1/0",
        "1 if drape_max_mirror_aware is the mirrored distance; empty without a symmetry plane",

@@ -57,11 +57,12 @@ struct PairMetrics {
   // Where the scene has a plane of mirror symmetry (mirror_symmetry.h): the last frames, a
   // against b's mirror image. A fold that buckled the other way is round-off apart here.
   std::optional<NodeDistance> drape_mirrored;
-  // The smaller of the direct and the mirrored max distance, and whether it is the mirrored one.
-  double drapeMirrorAware() const {
-    return drape_mirrored ? std::min(drape.max, drape_mirrored->max) : drape.max;
-  }
-  bool mirrorCloser() const { return drape_mirrored && drape_mirrored->max < drape.max; }
+  // Whether the shapes are mirror images: the mirrored distance under half the direct one (a fold
+  // that flipped). On a shape that is itself nearly symmetric the two differ only by its small
+  // asymmetries, and the direct distance stays the answer.
+  bool mirrorCloser() const { return drape_mirrored && drape_mirrored->max < 0.5 * drape.max; }
+  // The direct max distance, or the mirrored one where the shapes are mirror images.
+  double drapeMirrorAware() const { return mirrorCloser() ? drape_mirrored->max : drape.max; }
   SurfaceDistance surface;      // last frames, topology-free
   double sag_difference = 0.0;  // |sag_lowest(a) - sag_lowest(b)|, m
   // Max over the frames both sampled of the per-frame RMS node distance.

@@ -173,7 +173,7 @@ def draw_dashboard(fig, ctx):
         y -= 0.0175 * len(wrapped) + 0.008
     columns, cells = stability_summary(ctx)
     if columns:
-        ax = fig.add_axes((0.68, 0.6, 0.29, 0.3))
+        ax = fig.add_axes((0.68, 0.57, 0.29, 0.3))  # its title under the page's reproduce line
         ax.axis("off")
         engines = sorted(cells)
         table = ax.table(cellText=[[cells[e].get(s, "") for s in columns] for e in engines],

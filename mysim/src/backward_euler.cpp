@@ -47,9 +47,21 @@ class BackwardEuler final : public Integrator {
     }
     fillSprings(ps, x, v, h);
     fillRows(ps, h);
+    if (!model.hinges.empty()) addHinges(ps, v, h);
     const SpringBlockMatrix& A = *matrix_;
     CgResult cg;
-    if (preconditionerFor(h) == CgPreconditioner::Ssor) {
+    if (!model.hinges.empty()) {
+      // The hinges' constant blocks beside the springs' (addHinges); SSOR sweeps the spring
+      // matrix's own storage, so hinge scenes take block Jacobi (the scene reader refuses ssor).
+      matrix_->factorDiagonal(true);
+      cg = conjugateGradient(
+          [this, &A, &ps, h](const Vector& in, Vector& out) {
+            A.multiply(in, out);
+            multiplyHinges(ps, h, in, out);
+          },
+          [&A](const Vector& r, Vector& z) { A.applyDiagonalInverse(r, z); }, rhs_, dv_free_,
+          tolerance_, max_iterations_);
+    } else if (preconditionerFor(h) == CgPreconditioner::Ssor) {
       matrix_->prepareSsor(kSsorOmega);
       cg = ssorConjugateGradient(A, rhs_, dv_free_, tolerance_, max_iterations_);
     } else {
@@ -172,6 +184,48 @@ class BackwardEuler final : public Integrator {
       }
       diagonal[i] = block;
       rhs_.segment<3>(3 * i) = rhs;
+    }
+  }
+
+  // Hinges (hinge.h) have df/dx = -k w w^T (x) I, constant, so the step's matrix gains
+  // h^2 k w_p w_q I between their particles: on the diagonal blocks here, off it in
+  // multiplyHinges. The right-hand side gains h^2 J v0 = -h^2 w_p k b(v0) and, for a pinned
+  // hinge particle q, -h^2 k w_p w_q dv_q.
+  void addHinges(const ParticleSystem& ps, const Eigen::Ref<const Vector>& v, double h) {
+    const Model& model = ps.model();
+    std::vector<Mat3>& diagonal = matrix_->diagonal();
+    for (const Hinge& hinge : model.hinges) {
+      const Vec3 kb_v = hinge.stiffness * hingeVector(hinge, v.data());
+      Vec3 kb_pinned = Vec3::Zero();
+      for (int c = 0; c < 4; ++c) {
+        const int q = hinge.particle[c];
+        if (free_index_[q] < 0) kb_pinned += hinge.stiffness * hinge.weight[c] * dv_known_.segment<3>(3 * q);
+      }
+      for (int a = 0; a < 4; ++a) {
+        const int i = free_index_[hinge.particle[a]];
+        if (i < 0) continue;
+        const double w = hinge.weight[a];
+        diagonal[i].diagonal().array() += h * h * hinge.stiffness * w * w;
+        rhs_.segment<3>(3 * i) -= (h * h * w) * (kb_v + kb_pinned);
+      }
+    }
+  }
+
+  // out += the hinges' off-diagonal blocks times `in` (free unknowns): per hinge
+  // h^2 k w_p sum_{q free, q != p} w_q in_q on each free particle p.
+  void multiplyHinges(const ParticleSystem& ps, double h, const Vector& in, Vector& out) const {
+    for (const Hinge& hinge : ps.model().hinges) {
+      Vec3 sum = Vec3::Zero();
+      for (int c = 0; c < 4; ++c) {
+        const int q = free_index_[hinge.particle[c]];
+        if (q >= 0) sum += hinge.weight[c] * in.segment<3>(3 * q);
+      }
+      for (int a = 0; a < 4; ++a) {
+        const int p = free_index_[hinge.particle[a]];
+        if (p < 0) continue;
+        const double w = hinge.weight[a];
+        out.segment<3>(3 * p) += (h * h * hinge.stiffness * w) * (sum - w * in.segment<3>(3 * p));
+      }
     }
   }
 

@@ -17,6 +17,7 @@ EnergyTerms mechanicalEnergy(const Model& model, Eigen::Ref<const Vector> x,
     const double stretch = (x.segment<3>(3 * s.j) - x.segment<3>(3 * s.i)).norm() - s.rest_length;
     e.spring += 0.5 * s.stiffness * stretch * stretch;
   }
+  e.spring += hingeEnergy(model.hinges, x);
   return e;
 }
 

@@ -43,6 +43,10 @@ void implicitEulerResidual(const ParticleSystem& ps, const ImplicitEulerStep& st
     r.segment<3>(3 * sp.i) += g;
     r.segment<3>(3 * sp.j) -= g;
   }
+  for (const Hinge& hinge : model.hinges) {  // grad of 1/2 k |b|^2: k w_a b
+    const Vec3 kb = hinge.stiffness * hingeVector(hinge, x.data());
+    for (int a = 0; a < 4; ++a) r.segment<3>(3 * hinge.particle[a]) += hinge.weight[a] * kb;
+  }
   for (int p = 0; p < n; ++p) {
     if (model.pinned[p]) r.segment<3>(3 * p).setZero();
   }

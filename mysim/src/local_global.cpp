@@ -89,6 +89,20 @@ class LocalGlobal final : public Integrator {
       if (b >= 0) entries.emplace_back(b, b, weight_[k]);
       if (a >= 0 && b >= 0) entries.emplace_back(std::max(a, b), std::min(a, b), -weight_[k]);
     }
+    // Hinges (hinge.h): their energy is quadratic, k w w^T per hinge, so it goes into the
+    // matrix exactly and needs no local step; a pinned hinge particle's column moves to the
+    // right-hand side (globalStep).
+    for (const Hinge& hinge : model.hinges) {
+      for (int a = 0; a < 4; ++a) {
+        const int fa = free_index_[hinge.particle[a]];
+        if (fa < 0) continue;
+        for (int c = 0; c < 4; ++c) {
+          const int fc = free_index_[hinge.particle[c]];
+          if (fc < 0 || fc > fa) continue;  // the lower triangle, as the springs'
+          entries.emplace_back(fa, fc, hinge.stiffness * hinge.weight[a] * hinge.weight[c]);
+        }
+      }
+    }
     const int unknowns = static_cast<int>(free_particles_.size());
     Eigen::SparseMatrix<double> matrix(unknowns, unknowns);
     matrix.setFromTriplets(entries.begin(), entries.end());
@@ -142,6 +156,17 @@ class LocalGlobal final : public Integrator {
           b += (sp.damping * inverse_h) * (d0 + moved - u.dot(moved) * u);
         }
         if (model.pinned[q]) b += weight_[k] * step_.target.segment<3>(3 * q);
+      }
+      const HingeAdjacency& ha = ps.hingeAdjacency();
+      for (int e = ha.offsets[p]; e < ha.offsets[p + 1]; ++e) {
+        const Hinge& hinge = model.hinges[ha.hinge[e]];
+        const double wp = hinge.weight[ha.slot[e]];
+        for (int c = 0; c < 4; ++c) {
+          const int q = hinge.particle[c];
+          if (model.pinned[q]) {
+            b -= (hinge.stiffness * wp * hinge.weight[c]) * step_.target.segment<3>(3 * q);
+          }
+        }
       }
       rhs_.segment<3>(3 * f) = b;
     }

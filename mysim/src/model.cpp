@@ -38,6 +38,14 @@ Vec3 pinnedVelocity(const Model& model, double t) {
 
 void scaleStiffness(Model& model, double scale) {
   for (Spring& s : model.springs.edit()) s.stiffness *= scale;
+  for (Hinge& h : model.hinges) h.stiffness *= scale;
+  if (model.material) {  // the material the scaled model now is
+    ClothMaterial& m = model.material->material;
+    m.stretch_stiffness *= scale;
+    m.shear_stiffness *= scale;
+    m.bending_rigidity *= scale;
+    m.flex_stiffness *= scale;
+  }
 }
 
 }  // namespace mysim

@@ -18,7 +18,9 @@ ParticleSystem::ParticleSystem(Model model, BlowUpLimits limits)
     : model_(std::move(model)),
       limits_(limits),
       adjacency_(SpringAdjacency::build(model_.particleCount(), model_.springs)),
-      spring_scale_(static_cast<Eigen::Index>(model_.springs.size())) {
+      spring_scale_(static_cast<Eigen::Index>(model_.springs.size())),
+      hinge_adjacency_(HingeAdjacency::build(model_.particleCount(), model_.hinges)),
+      hinge_force_(3 * static_cast<Eigen::Index>(model_.hinges.size())) {
   for (const Spring& s : model_.springs) damped_springs_ |= s.damping != 0.0;
   // The energy scale a healthy run stays within: what it starts with, plus all that gravity can
   // release over the scene's extent, plus work wind and driven pins can do at that scale.
@@ -96,8 +98,17 @@ void ParticleSystem::gather(double t, Eigen::Ref<const Vector> x, Eigen::Ref<con
   // to share out evenly.
   constexpr int kBlock = 512;
   const int blocks = (springs + kBlock - 1) / kBlock;
+  const int hinges = static_cast<int>(model_.hinges.size());
+  double* hinge_force = hinge_force_.data();
+  const HingeAdjacency& ha = hinge_adjacency_;
 #pragma omp parallel if (n >= kParallelParticles)
   {
+    // 1b. Every hinge's k b, once (hinge.h).
+#pragma omp for schedule(static)
+    for (int k = 0; k < hinges; ++k) {
+      const Hinge& h = model_.hinges[k];
+      Eigen::Map<Vec3>(hinge_force + 3 * k) = h.stiffness * hingeVector(h, xs);
+    }
     // 1. Every spring's force scale, once.
 #pragma omp for schedule(static)
     for (int b = 0; b < blocks; ++b) {
@@ -117,6 +128,14 @@ void ParticleSystem::gather(double t, Eigen::Ref<const Vector> x, Eigen::Ref<con
         sx += k * (xq[0] - xp[0]);
         sy += k * (xq[1] - xp[1]);
         sz += k * (xq[2] - xp[2]);
+      }
+      // Then the hinges around p: -w k b each, in the hinge adjacency's order.
+      for (int e = ha.offsets[p]; e < ha.offsets[p + 1]; ++e) {
+        const double w = model_.hinges[ha.hinge[e]].weight[ha.slot[e]];
+        const double* kb = hinge_force + 3 * ha.hinge[e];
+        sx -= w * kb[0];
+        sy -= w * kb[1];
+        sz -= w * kb[2];
       }
       if (accelerations) {
         if (model_.pinned[p]) {
@@ -164,6 +183,14 @@ void ParticleSystem::gatherPerEnd(double t, Eigen::Ref<const Vector> x, Eigen::R
       fx += scale * dx;
       fy += scale * dy;
       fz += scale * dz;
+    }
+    for (int e = hinge_adjacency_.offsets[p]; e < hinge_adjacency_.offsets[p + 1]; ++e) {
+      const Hinge& h = model_.hinges[hinge_adjacency_.hinge[e]];
+      const double w = h.weight[hinge_adjacency_.slot[e]];
+      const Vec3 kb = h.stiffness * hingeVector(h, xs);  // the fast path's operations
+      fx -= w * kb.x();
+      fy -= w * kb.y();
+      fz -= w * kb.z();
     }
     fs[3 * p] = fx;
     fs[3 * p + 1] = fy;

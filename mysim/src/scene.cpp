@@ -17,6 +17,11 @@ Model buildModel(const Scene& scene) {
       break;
     case SystemKind::Cloth:
       buildCloth(scene.cloth, model);
+      if (scene.cloth_material) {
+        applyClothMaterial(*scene.cloth_material, scene.material_grid.dx, scene.material_grid.dy,
+                           model);
+        model.material->clamped = scene.material_clamped;
+      }
       break;
     case SystemKind::Particles: {
       const int n = static_cast<int>(scene.particles.size());

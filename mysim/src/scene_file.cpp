@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "mysim/cloth_material.h"
 #include "mysim/json_input.h"
 #include "mysim/run_limits.h"
 
@@ -81,7 +82,91 @@ void readChain(FieldReader& system, Scene& scene) {
   scene.pins = readPins(system, c.particles, {0}, 0, 0);
 }
 
+// "material": what the cloth is made of (cloth_material.h); its springs, hinges and masses
+// follow from it at the scene's resolution.
+ClothMaterial readClothMaterial(FieldReader& r) {
+  ClothMaterial m;
+  m.density = r.positive("density");
+  m.stretch_stiffness = r.positive("stretch_stiffness");
+  m.shear_stiffness = r.positive("shear_stiffness");
+  m.damping_rate = r.nonNegative("damping_rate", 0.0);
+  FieldReader bending = r.object("bending");
+  const std::string model = bending.text("model");
+  if (model == "hinge") {
+    m.bending = BendingModel::Hinge;
+    m.bending_rigidity = bending.positive("rigidity");
+  } else if (model == "flex") {
+    m.bending = BendingModel::Flex;
+    m.flex_stiffness = bending.positive("stiffness");
+  } else {
+    failField(bending.field("model"), "\"hinge\" or \"flex\"", bending.raw("model"));
+  }
+  bending.refuseUnknown("docs/materials.md");
+  r.refuseUnknown("docs/materials.md");
+  return m;
+}
+
+// A cloth from its material: the grid from "resolution" (cells across the width), the
+// constants from "material"; "pins": "left_clamp" holds the left edge in a clamp one cell deep.
+void readMaterialCloth(FieldReader& system, Scene& scene) {
+  for (const char* derived : {"rows", "cols", "particle_mass", "structural", "shear", "flex"}) {
+    if (system.has(derived)) {
+      throw FieldError{system.field(derived),
+                       "not with system.material: the material and system.resolution give it "
+                       "(docs/materials.md)"};
+    }
+  }
+  ClothShape& c = scene.cloth;
+  FieldReader material = system.object("material");
+  scene.cloth_material = readClothMaterial(material);
+  const int resolution = static_cast<int>(system.integer("resolution", 1, 10'000));
+  c.width = system.positive("width");
+  c.height = system.positive("height");
+  const bool clamped = system.has("pins") && system.raw("pins") == "left_clamp";
+  const MaterialGrid grid = materialGrid(c.width, c.height, resolution, clamped);
+  scene.material_grid = grid;
+  scene.material_clamped = clamped;
+  if (!latticeSprings(scene.cloth_material->stretch_stiffness,
+                      scene.cloth_material->shear_stiffness, grid.dx, grid.dy)) {
+    throw FieldError{system.field("material") + ".shear_stiffness",
+                     "at most what the grid's cells allow: a structural spring would need "
+                     "negative stiffness (cells " + std::to_string(grid.dx) + " x " +
+                         std::to_string(grid.dy) + " m; docs/materials.md)"};
+  }
+  c.rows = grid.rows;
+  c.cols = grid.cols;
+  c.particle_mass = 1.0;  // replaced by the lumped masses
+  const SpringParameters placeholder{1.0, 0.0};  // replaced by the lattice's constants
+  c.structural = c.shear = placeholder;
+  if (scene.cloth_material->bending == BendingModel::Flex) c.flex = placeholder;
+  const std::string orientation = system.text("orientation", "horizontal");
+  if (orientation != "horizontal" && orientation != "hanging") {
+    failField(system.field("orientation"), "\"horizontal\" or \"hanging\"",
+              system.raw("orientation"));
+  }
+  c.hanging = orientation == "hanging";
+  c.origin = system.vec3("origin", Vec3::Zero());
+  if (clamped) {
+    // The clamp's two columns straddle its edge at origin.x: the overhang is `width` from it at
+    // every resolution (materialGrid).
+    c.origin.x() -= 0.5 * grid.dx;
+    c.width = (grid.cols - 1) * grid.dx;
+    scene.pins.clear();
+    for (int r = 0; r < c.rows; ++r) {
+      scene.pins.push_back(r * c.cols);
+      scene.pins.push_back(r * c.cols + 1);
+    }
+  } else {
+    scene.pins = readPins(system, c.rows * c.cols, {0, c.cols - 1}, c.rows, c.cols);
+  }
+  scene.start_velocity = system.vec3("velocity", Vec3::Zero());
+}
+
 void readCloth(FieldReader& system, Scene& scene) {
+  if (system.has("material")) {
+    readMaterialCloth(system, scene);
+    return;
+  }
   ClothShape& c = scene.cloth;
   c.rows = static_cast<int>(system.integer("rows", 2, 100'000));
   c.cols = static_cast<int>(system.integer("cols", 2, 100'000));
@@ -302,6 +387,25 @@ void readEngineSections(FieldReader& top, const std::vector<EngineSection>& sect
   }
 }
 
+// What a material cloth's constants mean for the rest of the scene: its damping rate is the
+// drag (so forces.drag would say it twice), and hinges need a preconditioner that sees them.
+void applyMaterialForces(Scene& scene) {
+  const ClothMaterial& m = *scene.cloth_material;
+  if (m.damping_rate > 0.0) {
+    if (scene.drag > 0.0) {
+      throw FieldError{"forces.drag",
+                       "not with system.material.damping_rate: the rate gives the drag"};
+    }
+    scene.drag = m.damping_rate * m.density * scene.material_grid.dx * scene.material_grid.dy;
+  }
+  if (m.bending == BendingModel::Hinge &&
+      scene.integrator.preconditioner == CgPreconditioner::Ssor) {
+    throw FieldError{"integrator.cg_preconditioner",
+                     "\"block-jacobi\", \"jacobi\" or \"auto\" with hinge bending (SSOR sweeps "
+                     "the springs' matrix alone)"};
+  }
+}
+
 Scene readScene(const json& root, const std::vector<EngineSection>& sections) {
   Scene scene;
   FieldReader top(root, "");
@@ -331,6 +435,7 @@ Scene readScene(const json& root, const std::vector<EngineSection>& sections) {
   }
 
   readIntegrator(top, scene);
+  if (scene.cloth_material) applyMaterialForces(scene);
 
   if (top.has("output")) {
     FieldReader r = top.object("output");

@@ -33,6 +33,11 @@ class VertexBlockDescent final : public Integrator {
   };
   struct Vertex {
     int particle, first;  // its incidences: [first, next vertex's first)
+    int first_hinge;      // its hinges: [first_hinge, next vertex's first_hinge)
+  };
+  struct HingeIncidence {
+    int hinge;
+    double weight;  // this vertex's weight in it
   };
   struct Incidence {
     int other;
@@ -46,6 +51,7 @@ class VertexBlockDescent final : public Integrator {
     ParticleSystem& ps = *system.particles();
     const int n = ps.particleCount();
     if (vertices_.empty() && n > 0) pack(ps);
+    hinges_ = &ps.model().hinges;
     prepareImplicitEulerStep(ps, s, h, step_);
     initialGuess(ps, s, h);
     double omega = 1.0;
@@ -86,20 +92,41 @@ class VertexBlockDescent final : public Integrator {
   void pack(const ParticleSystem& ps) {
     const Model& model = ps.model();
     const SpringAdjacency& a = ps.adjacency();
-    for (const std::vector<int>& color : colorParticles(a)) {
+    const HingeAdjacency& ha = ps.hingeAdjacency();
+    for (const std::vector<int>& color : colorParticles(couplings(ps))) {
       Color packed{static_cast<int>(vertices_.size()), 0};
       for (int p : color) {
         if (model.pinned[p]) continue;
-        vertices_.push_back({p, static_cast<int>(incidences_.size())});
+        vertices_.push_back({p, static_cast<int>(incidences_.size()),
+                             static_cast<int>(hinge_incidences_.size())});
         for (int e = a.offsets[p]; e < a.offsets[p + 1]; ++e) {
           const Spring& sp = model.springs[a.spring[e]];
           incidences_.push_back({a.other[e], sp.rest_length, sp.stiffness, sp.damping});
+        }
+        for (int e = ha.offsets[p]; e < ha.offsets[p + 1]; ++e) {
+          hinge_incidences_.push_back({ha.hinge[e], model.hinges[ha.hinge[e]].weight[ha.slot[e]]});
         }
       }
       packed.end = static_cast<int>(vertices_.size());
       colors_.push_back(packed);
     }
-    vertices_.push_back({-1, static_cast<int>(incidences_.size())});  // the last one's end
+    // The last one's end.
+    vertices_.push_back({-1, static_cast<int>(incidences_.size()),
+                         static_cast<int>(hinge_incidences_.size())});
+  }
+
+  // Who moves whom: the springs, and with hinges every pair of a hinge's four particles (two
+  // vertices of one hinge must not relax at once, whether or not a spring joins them).
+  static SpringAdjacency couplings(const ParticleSystem& ps) {
+    const Model& model = ps.model();
+    if (model.hinges.empty()) return ps.adjacency();
+    std::vector<Spring> pairs(model.springs.begin(), model.springs.end());
+    for (const Hinge& h : model.hinges) {
+      for (int a = 0; a < 4; ++a) {
+        for (int c = a + 1; c < 4; ++c) pairs.push_back({h.particle[a], h.particle[c]});
+      }
+    }
+    return SpringAdjacency::build(model.particleCount(), pairs);
   }
 
   // One Newton step per vertex of a colour (in parallel: they share no spring). The Hessian as
@@ -132,6 +159,13 @@ class VertexBlockDescent final : public Integrator {
         hxx += along * u.x() * u.x(), hyy += along * u.y() * u.y(), hzz += along * u.z() * u.z();
         hxy += along * u.x() * u.y(), hxz += along * u.x() * u.z(), hyz += along * u.y() * u.z();
       }
+      // Hinges: energy 1/2 k |b|^2, so f -= k w b and the Hessian gains k w^2 I (hinge.h).
+      for (int e = vertices_[v].first_hinge; e < vertices_[v + 1].first_hinge; ++e) {
+        const Hinge& hinge = (*hinges_)[hinge_incidences_[e].hinge];
+        const double w = hinge_incidences_[e].weight;
+        f -= (hinge.stiffness * w) * hingeVector(hinge, x);
+        diagonal += hinge.stiffness * w * w;
+      }
       Mat3 hessian;
       hessian << diagonal + hxx, hxy, hxz, hxy, diagonal + hyy, hyz, hxz, hyz, diagonal + hzz;
       xp += hessian.llt().solve(f);
@@ -154,6 +188,8 @@ class VertexBlockDescent final : public Integrator {
   std::vector<Color> colors_;
   std::vector<Vertex> vertices_;  // free vertices in colour order, then one end marker
   std::vector<Incidence> incidences_;
+  std::vector<HingeIncidence> hinge_incidences_;
+  const std::vector<Hinge>* hinges_ = nullptr;  // the system's, this step
   Vector x_;                  // (3N) the iterate
   Vector previous_, before_previous_;  // (3N) iterates one and two passes back (acceleration)
   Vector previous_velocity_;  // (3N) the last step's start velocity (initial guess)

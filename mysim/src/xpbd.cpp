@@ -39,7 +39,11 @@ class Xpbd final : public Integrator {
     for (int sub = 0; sub < substeps_; ++sub) {
       predict(ps, s, hs);
       lambda_.setZero();
-      for (int it = 0; it < iterations_; ++it) projectSprings(s);
+      hinge_lambda_.setZero();
+      for (int it = 0; it < iterations_; ++it) {
+        projectSprings(s);
+        projectHinges(model, s);
+      }
       s.y.tail(3 * n) = (s.y.head(3 * n) - x_prev_) / hs;
       // Pins on their path with its velocity, then the contacts: after every substep.
       system.afterStep(s);
@@ -53,6 +57,7 @@ class Xpbd final : public Integrator {
   void prepare(const Model& model) {
     colors_ = colorSprings(model.particleCount(), model.springs);
     lambda_ = Vector::Zero(static_cast<Eigen::Index>(model.springs.size()));
+    hinge_lambda_ = Vector::Zero(3 * static_cast<Eigen::Index>(model.hinges.size()));
     inverse_mass_.resize(model.particleCount());
     for (int p = 0; p < model.particleCount(); ++p) {
       inverse_mass_[p] = model.pinned[p] ? 0.0 : 1.0 / model.mass[p];
@@ -71,6 +76,10 @@ class Xpbd final : public Integrator {
         packed_.push_back({sp.i, sp.j, sp.rest_length, inverse_mass_[sp.i], inverse_mass_[sp.j],
                            1.0 / (sp.stiffness * hs * hs), sp.damping / (sp.stiffness * hs)});
       }
+    }
+    hinge_alpha_.resize(static_cast<Eigen::Index>(model.hinges.size()));
+    for (int k = 0; k < static_cast<int>(model.hinges.size()); ++k) {
+      hinge_alpha_[k] = 1.0 / (model.hinges[k].stiffness * hs * hs);
     }
     prepared_hs_ = hs;
   }
@@ -125,6 +134,30 @@ class Xpbd final : public Integrator {
     }
   }
 
+  // Hinges (hinge.h) as vector constraints C = b = sum w_a x_a with compliance 1/k (energy
+  // 1/2 k |C|^2), grad_a C = w_a I, so XPBD's update is, with alpha~ = 1 / (k h_s^2),
+  //   dlambda = (-C - alpha~ lambda) / (sum_a w_a^2 / m_a + alpha~),  x_a += w_a dlambda / m_a.
+  // One after another in list order after the springs (a hinge's four particles are shared with
+  // its neighbours' hinges, and there are few enough that this pass is not the step's cost).
+  void projectHinges(const Model& model, State& s) {
+    double* x = s.y.data();
+    for (int k = 0; k < static_cast<int>(model.hinges.size()); ++k) {
+      const Hinge& hinge = model.hinges[k];
+      double denominator = hinge_alpha_[k];
+      for (int a = 0; a < 4; ++a) {
+        denominator += hinge.weight[a] * hinge.weight[a] * inverse_mass_[hinge.particle[a]];
+      }
+      if (denominator == hinge_alpha_[k]) continue;  // all four pinned
+      Eigen::Map<Vec3> lambda(hinge_lambda_.data() + 3 * k);
+      const Vec3 dlambda = (-hingeVector(hinge, x) - hinge_alpha_[k] * lambda) / denominator;
+      for (int a = 0; a < 4; ++a) {
+        const int p = hinge.particle[a];
+        Eigen::Map<Vec3>(x + 3 * p) += (hinge.weight[a] * inverse_mass_[p]) * dlambda;
+      }
+      lambda += dlambda;
+    }
+  }
+
   // Below this many springs in a colour, threads cost more than they save.
   static constexpr int kParallelSprings = 2048;
   struct PackedSpring {
@@ -137,6 +170,8 @@ class Xpbd final : public Integrator {
   std::vector<PackedSpring> packed_;  // (S) the springs in colour order, for substeps of prepared_hs_
   std::vector<std::vector<int>> colors_;
   Vector lambda_;        // (S) accumulated multiplier of each spring (colour order), this substep
+  Vector hinge_lambda_;  // (3H) accumulated multiplier of each hinge, this substep
+  Vector hinge_alpha_;   // (H) 1 / (k h_s^2)
   Vector inverse_mass_;  // (N) 0 for pinned particles
   Vector x_prev_;        // (3N) positions at the substep's start
 };

@@ -117,4 +117,27 @@ void DeformableLinkSpringForce::addScaledElasticForceDifferential(btScalar scale
   });
 }
 
+void DeformableHingeForce::addScaledElasticForce(btScalar scale, TVStack& force) const {
+  const btSoftBody& body = *m_softBodies[0];
+  for (const mysim::Hinge& h : hinges_) {
+    btVector3 b(0, 0, 0);
+    for (int a = 0; a < 4; ++a) b += h.weight[a] * body.m_nodes[h.particle[a]].m_q;
+    for (int a = 0; a < 4; ++a) {
+      force[body.m_nodes[h.particle[a]].index] -= (scale * h.stiffness * h.weight[a]) * b;
+    }
+  }
+}
+
+void DeformableHingeForce::addScaledElasticForceDifferential(btScalar scale, const TVStack& dx,
+                                                             TVStack& df) {
+  const btSoftBody& body = *m_softBodies[0];
+  for (const mysim::Hinge& h : hinges_) {
+    btVector3 b(0, 0, 0);
+    for (int a = 0; a < 4; ++a) b += h.weight[a] * dx[body.m_nodes[h.particle[a]].index];
+    for (int a = 0; a < 4; ++a) {
+      df[body.m_nodes[h.particle[a]].index] -= (scale * h.stiffness * h.weight[a]) * b;
+    }
+  }
+}
+
 }  // namespace reference

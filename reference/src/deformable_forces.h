@@ -3,6 +3,7 @@
 
 #include <vector>
 
+#include "mysim/hinge.h"
 #include "mysim/wind.h"
 
 namespace reference {
@@ -112,6 +113,34 @@ class DeformableLinkSpringForce final : public btDeformableLagrangianForce {
     }
   }
   std::vector<LinkParameters> links_;
+};
+
+// mysim's hinge bending (mysim/hinge.h) on Bullet's force interface: per hinge b = sum w_a x_a,
+// F_a = -k w_a b from the predicted positions m_q (as Bullet's own elastic forces), and the
+// constant differential dF_a = -k w_a sum_c w_c dx_c for the implicit solve. Model particle p is
+// node p of the one body. No damping.
+class DeformableHingeForce final : public btDeformableLagrangianForce {
+ public:
+  explicit DeformableHingeForce(std::vector<mysim::Hinge> hinges) : hinges_(std::move(hinges)) {}
+
+  void addScaledForces(btScalar scale, TVStack& force) override {
+    addScaledElasticForce(scale, force);
+  }
+  void addScaledExplicitForce(btScalar scale, TVStack& force) override {
+    addScaledElasticForce(scale, force);
+  }
+  void addScaledDampingForce(btScalar, TVStack&) override {}
+  void addScaledDampingForceDifferential(btScalar, const TVStack&, TVStack&) override {}
+  void buildDampingForceDifferentialDiagonal(btScalar, TVStack&) override {}
+  void addScaledElasticForceDifferential(btScalar scale, const TVStack& dx, TVStack& df) override;
+  double totalEnergy(btScalar) override { return 0.0; }  // springcheck computes energy itself
+  btDeformableLagrangianForceType getForceType() override {
+    return static_cast<btDeformableLagrangianForceType>(10);
+  }
+
+ private:
+  void addScaledElasticForce(btScalar scale, TVStack& force) const;
+  std::vector<mysim::Hinge> hinges_;
 };
 
 }  // namespace reference

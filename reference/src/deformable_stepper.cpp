@@ -128,6 +128,13 @@ class DeformableStepper final : public BulletStepper {
           "(the force law is ours, a stiffness and damping per link; the solver, contacts and "
           "time stepping are Bullet's)");
     }
+    if (!model.hinges.empty()) {
+      hinges_ = std::make_unique<DeformableHingeForce>(model.hinges);
+      world_->addForce(body_.get(), hinges_.get());
+      notes_.push_back(
+          "hinge bending through springcheck's hinge force on Bullet's force interface (the "
+          "force law is mysim's, docs/materials.md; the solver is Bullet's)");
+    }
     gravity_ = std::make_unique<btDeformableGravityForce>(g);
     world_->addForce(body_.get(), gravity_.get());
     if (model.wind) {
@@ -178,6 +185,7 @@ class DeformableStepper final : public BulletStepper {
   std::unique_ptr<btDeformableGravityForce> gravity_;
   std::unique_ptr<DeformableWindForce> wind_;
   std::unique_ptr<DeformableDragForce> drag_;
+  std::unique_ptr<DeformableHingeForce> hinges_;
   std::vector<std::unique_ptr<StaticCollider>> colliders_;
 };
 

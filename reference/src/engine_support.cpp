@@ -53,6 +53,12 @@ std::expected<void, std::string> checkSupported(const mysim::Model& model, Bulle
                     "integrator.dt or a smaller drag");
     }
   }
+  if (!model.hinges.empty()) {
+    return refuse("system.material.bending",
+                  "the classic solver has no hinge energy (its bending constraints are links "
+                  "between nodes two apart: the flex model); use \"model\": \"flex\", or "
+                  "bullet-deformable or bullet-implicit, which take hinges as a force");
+  }
   for (int k = 0; k < static_cast<int>(model.springs.size()); ++k) {
     if (model.springs[k].damping > 0.0) {
       return refuse(mysim::springField(model, k, "damping"),

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "compare/metrics/cantilever_metric.h"
+
 namespace springcheck {
 
 double ellipticK(double k) {
@@ -185,6 +187,13 @@ std::optional<ClosedFormError> closedFormError(const mysim::Model& model,
                                                const mysim::RunRecord& run) {
   if (run.frames.empty()) return std::nullopt;
   if (model.isCircle()) return circleError(model, run);
+  if (auto cantilever = cantileverReference(model)) {
+    const auto reading = readCantilever(model, run.frames.back());
+    const double exact = cantilever->overhang * cantilever->elastica.drop;
+    ClosedFormError e{"cantilever tip drop (heavy elastica)", std::abs(reading->drop - exact), exact};
+    e.motion_left = motionLeft(run);
+    return e;
+  }
   const std::optional<UniformChain> chain = uniformChain(model);
   std::vector<char> only_first_pinned(model.particleCount(), 0);
   if (!only_first_pinned.empty()) only_first_pinned[0] = 1;

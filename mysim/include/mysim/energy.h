@@ -10,7 +10,7 @@ struct Model;
 struct EnergyTerms {
   double kinetic = 0.0;  // sum 1/2 m |v|^2 over free particles
   double gravity = 0.0;  // sum -m g.x over free particles (zero at the origin)
-  double spring = 0.0;   // sum 1/2 k (|xj - xi| - rest)^2 over springs
+  double spring = 0.0;   // sum 1/2 k (|xj - xi| - rest)^2 over springs, and the hinges' 1/2 k |b|^2
   // Work done on the system since t = 0 by what the scene drives from outside (wind, moving
   // pins), J; not part of total(). total() - external_work cannot rise in a damped scene.
   double external_work = 0.0;

@@ -7,7 +7,8 @@
 // so it folds into an effective mass and target, exactly:
 //   m~ = m + h d,   y~ = (m (x0 + h v0) + h d x0 + h^2 (m g + wind(t + h))) / m~,
 // and the step's equations are the zero of
-//   r(x) = m~ / h^2 (x - y~) + grad E_springs(x) + sum_s (c_s / h) u_s u_s^T (dx_i - dx_j)
+//   r(x) = m~ / h^2 (x - y~) + grad E_springs(x) + grad E_hinges(x)
+//          + sum_s (c_s / h) u_s u_s^T (dx_i - dx_j)
 // (dx = x - x0; u_s the spring's direction at x; the last term is spring damping at v1). Without
 // spring damping r is the gradient of 1/(2 h^2) |x - y~|^2_M~ + E(x) (Liu et al. 2013, eq. 6).
 #include "mysim/particle_system.h"

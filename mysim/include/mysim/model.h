@@ -5,6 +5,8 @@
 
 #include "mysim/pin_motion.h"
 #include "mysim/collider.h"
+#include "mysim/hinge.h"
+#include "mysim/material.h"
 #include "mysim/spring.h"
 #include "mysim/spring_list.h"
 #include "mysim/types.h"
@@ -36,12 +38,14 @@ struct Model {
   Vector start_position;        // (3N) m
   Vector start_velocity;        // (3N) m/s
   SpringList springs;           // flat list, any topology; shared by copies of the model
+  std::vector<Hinge> hinges;    // bending across mesh edges (hinge.h); empty unless a scene asks
   Vec3 gravity = Vec3::Zero();  // m/s^2
   double drag = 0.0;            // N s/m, viscous drag -drag * v on every particle
   std::optional<Wind> wind;
   std::optional<PinMotion> pin_motion;
   std::vector<Collider> colliders;  // static, frictionless; contacts resolved in this order
   std::optional<GridShape> grid;
+  std::optional<MaterialSource> material;  // set when the scene described a material
 
   int particleCount() const { return static_cast<int>(mass.size()); }
   bool isCircle() const { return kind == SystemKind::Circle; }
@@ -56,7 +60,8 @@ std::string springField(const Model& model, int spring, const std::string& param
 Vec3 pinnedPosition(const Model& model, int particle, double t);
 Vec3 pinnedVelocity(const Model& model, double t);
 
-// Every spring's stiffness times `scale` (sweeps and stability studies scale the model).
+// Every spring's and hinge's stiffness times `scale` (sweeps and stability studies scale the
+// model).
 void scaleStiffness(Model& model, double scale);
 
 }  // namespace mysim

@@ -2,6 +2,7 @@
 #include <Eigen/SparseCore>
 
 #include "mysim/blowup.h"
+#include "mysim/hinge.h"
 #include "mysim/model.h"
 #include "mysim/ode_system.h"
 #include "mysim/spring_adjacency.h"
@@ -53,6 +54,7 @@ class ParticleSystem final : public OdeSystem {
   void acceleration(double t, Eigen::Ref<const Vector> x, Eigen::Ref<const Vector> v,
                     Eigen::Ref<Vector> a) const;
   const SpringAdjacency& adjacency() const { return adjacency_; }
+  const HingeAdjacency& hingeAdjacency() const { return hinge_adjacency_; }
   // Gravity, drag and wind on particle p at time t (v: the 3N velocities): every force but the
   // springs', what both force loops start each sum from.
   Vec3 externalForce(int p, double t, const double* v) const;
@@ -78,6 +80,8 @@ class ParticleSystem final : public OdeSystem {
   SpringAdjacency adjacency_;    // derived from model_.springs once
   bool damped_springs_ = false;  // any spring damping: the per-spring pass reads velocities
   mutable Vector spring_scale_;  // (S) each spring's force scale: scratch of gather()
+  HingeAdjacency hinge_adjacency_;
+  mutable Vector hinge_force_;   // (3H) each hinge's k b: scratch of gather()
   void gatherPerEnd(double t, Eigen::Ref<const Vector> x, Eigen::Ref<const Vector> v,
                     Eigen::Ref<Vector> out) const;
 };

@@ -9,6 +9,7 @@
 #include "mysim/blowup.h"
 #include "mysim/chain.h"
 #include "mysim/cloth.h"
+#include "mysim/cloth_material.h"
 #include "mysim/integrator.h"
 #include "mysim/model.h"
 
@@ -50,6 +51,9 @@ struct Scene {
   Eigen::Vector2d circle_start{1.0, 0.0};
   ChainShape chain;
   ClothShape cloth;
+  std::optional<ClothMaterial> cloth_material;  // cloth from its material (docs/materials.md)
+  MaterialGrid material_grid;                   // its grid, when cloth_material is set
+  bool material_clamped = false;                // pins "left_clamp"
   std::vector<ExplicitParticle> particles;  // kind == Particles
   std::vector<Spring> springs;              // kind == Particles
   std::vector<int> pins;                    // chain and cloth: pinned particle indices

@@ -15,7 +15,9 @@ namespace springcheck {
 //    x-crossings of the bob against the rigid pendulum's T = 4 sqrt(L / g) K(sin(theta0 / 2));
 //  - a chain pinned at both ends (not one above the other): max |x_j - x_j(closed form)| at the
 //    last frame, x_j the discrete elastic catenary (closed_form.cpp: the tension's horizontal part
-//    and the first segment's vertical part solved by Newton to 1e-13 of the span).
+//    and the first segment's vertical part solved by Newton to 1e-13 of the span);
+//  - a material strip in a clamp with hinge bending (cantilever_metric.h): |tip drop - the heavy
+//    elastica's| at the last frame, m.
 struct ClosedFormError {
   std::string quantity;  // what was compared
   double error = 0.0;    // m for positions, relative for the period

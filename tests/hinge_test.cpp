@@ -1,0 +1,191 @@
+// Hinge bending (mysim/hinge.h) and material cloths (mysim/cloth_material.h): the energy's
+// continuum limit, its gradient against finite differences, invariances, and every integrator
+// family holding the same static equilibrium.
+// ctest-label: unit physics
+#include "mysim/hinge.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "mysim/cloth_material.h"
+#include "mysim/cloth_mesh.h"
+#include "mysim/energy.h"
+#include "mysim/integrator.h"
+#include "mysim/particle_system.h"
+#include "mysim/scene.h"
+#include "mysim/scene_file.h"
+#include "mysim/simulation.h"
+#include "mysim/stepper.h"
+
+namespace mysim {
+namespace {
+
+// A flat material sheet (hinge bending, rigidity B) of width x height at `resolution` cells.
+Scene materialSheet(int resolution, double width, double height, double rigidity,
+                    const std::string& pins = "\"none\"") {
+  const std::string text = R"({"system": {"type": "cloth", "width": )" + std::to_string(width) +
+                           R"(, "height": )" + std::to_string(height) + R"(, "resolution": )" +
+                           std::to_string(resolution) +
+                           R"(, "material": {"density": 0.2, "stretch_stiffness": 1000,
+                               "shear_stiffness": 300, "bending": {"model": "hinge", "rigidity": )" +
+                           std::to_string(rigidity) + R"(}}, "pins": )" + pins +
+                           R"(}, "forces": {"gravity": [0, -9.8, 0]},
+                              "integrator": {"name": "backward-euler", "dt": 0.002, "duration": 1}})";
+  auto scene = parseScene(text, "test");
+  EXPECT_TRUE(scene.has_value()) << (scene ? "" : scene.error());
+  return *scene;
+}
+
+// The sheet's rest positions (in the x, -z plane) wrapped isometrically onto a cylinder of
+// curvature kappa whose axis runs along `axis` in the sheet's plane (unit, in (x, z)).
+Vector wrapOnCylinder(const Vector& rest, double kappa, const Vec3& axis) {
+  const Vec3 normal = Vec3::UnitY();
+  const Vec3 across = axis.cross(normal).normalized();  // in the plane, across the axis
+  Vector x = rest;
+  for (int p = 0; p < rest.size() / 3; ++p) {
+    const Vec3 r = rest.segment<3>(3 * p);
+    const double s = r.dot(across), a = r.dot(axis);
+    x.segment<3>(3 * p) = a * axis + std::sin(kappa * s) / kappa * across +
+                          (1.0 - std::cos(kappa * s)) / kappa * normal;
+  }
+  return x;
+}
+
+TEST(HingeBending, AFlatSheetStoresNoEnergyAndFeelsNoForceInAnyRigidPlacement) {
+  const Model model = buildModel(materialSheet(8, 0.1, 0.05, 1e-4));
+  ASSERT_FALSE(model.hinges.empty());
+  const Eigen::Matrix3d rotation =
+      Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  Vector x = model.start_position;
+  for (int p = 0; p < model.particleCount(); ++p) {
+    x.segment<3>(3 * p) = rotation * x.segment<3>(3 * p) + Vec3(0.3, -1, 2);
+  }
+  // Round-off: coordinates up to 2.3 m, four weights of up to 2: |b| within 1e-14 m.
+  const double stiffest = model.hinges.front().stiffness;
+  EXPECT_LT(hingeEnergy(model.hinges, x), model.hinges.size() * 0.5 * stiffest * 1e-28);
+  for (const Hinge& h : model.hinges) {
+    EXPECT_LT(hingeVector(h, x.data()).norm(), 1e-14);
+    double sum = 0.0;
+    for (double w : h.weight) sum += w;
+    EXPECT_LT(std::abs(sum), 1e-13);  // translations store nothing
+  }
+}
+
+// The continuum limit the stiffness k = B / A is chosen for: bent into a cylinder of curvature
+// kappa across the rows (the cantilever's bending), a sheet stores B kappa^2 / 2 per area over
+// the part its hinges cover: every column of cells but half a cell at each free edge, (n - 1) / n
+// of the area (the free edges carry no moment in a real strip either: a cantilever's tip). The
+// discrete energy's other error is O((kappa a)^2) (chords of the cylinder): at kappa a = 0.02
+// within 1e-3 at every resolution.
+TEST(HingeBending, ACylinderAcrossTheRowsStoresTheContinuumEnergyAtEveryResolution) {
+  const double rigidity = 1e-4, width = 0.1, height = 0.05;
+  for (int resolution : {8, 16, 32, 64}) {
+    const Model model = buildModel(materialSheet(resolution, width, height, rigidity));
+    const double a = width / resolution, kappa = 0.02 / a;
+    const Vector x = wrapOnCylinder(model.start_position, kappa, -Vec3::UnitZ());
+    const double covered = (resolution - 1.0) / resolution;
+    const double exact = 0.5 * rigidity * kappa * kappa * width * height * covered;
+    EXPECT_NEAR(hingeEnergy(model.hinges, x) / exact, 1.0, 1e-3) << resolution;
+  }
+}
+
+// Bent about the other axis (along the rows) the grid's hinges give the same energy: the
+// lattice is symmetric under swapping rows and columns. About a diagonal they are stiffer: with
+// the surface's Hessian (p, q; q, r), each cut of the cells stores (p +- q)^2 + (q +- r)^2 + 4 q^2
+// where the continuum stores (p + r)^2, so both cuts at half the rigidity store
+// p^2 + r^2 + 6 q^2: 1 + sin^2(2 phi) of the continuum for a cylinder at phi to the rows, 2 at
+// 45 degrees, the same for both diagonals (docs/materials.md; a finding, not a bound to relax).
+TEST(HingeBending, BendingAlongEitherGridAxisAgreesAndBothDiagonalsAreTwiceAsStiff) {
+  const double rigidity = 1e-4, width = 0.1, height = 0.1;
+  const Model model = buildModel(materialSheet(32, width, height, rigidity));
+  const double a = width / 32, kappa = 0.02 / a;
+  auto energy = [&](const Vec3& axis) {
+    return hingeEnergy(model.hinges, wrapOnCylinder(model.start_position, kappa, axis));
+  };
+  const double along_rows = energy(-Vec3::UnitZ());
+  EXPECT_NEAR(energy(Vec3::UnitX()) / along_rows, 1.0, 1e-3);
+  // Free edges: the diagonal cylinder's hinges cover the square less its corners, so the ratio
+  // is 2 within the edge effect (2 % at 32 cells, measured 1.6 %).
+  EXPECT_NEAR(energy(Vec3(1, 0, 1).normalized()) / along_rows, 2.0, 0.04);
+  EXPECT_NEAR(energy(Vec3(1, 0, 1).normalized()) / energy(Vec3(1, 0, -1).normalized()), 1.0, 1e-9);
+}
+
+// F = -grad E: each particle's hinge force against central differences of the energy, on a
+// crumpled sheet.
+TEST(HingeBending, TheForceIsMinusTheEnergysGradient) {
+  Scene scene = materialSheet(4, 0.1, 0.05, 1e-4);
+  scene.gravity = Vec3::Zero();
+  Model model = buildModel(scene);
+  model.springs = SpringList{};  // the hinges alone
+  ParticleSystem system(model, scene.limits);
+  Vector x = model.start_position;
+  for (int k = 0; k < x.size(); ++k) x[k] += 0.004 * std::sin(1.7 * k + 0.3);
+  const Vector v = Vector::Zero(x.size());
+  Vector f(x.size()), reference(x.size());
+  system.force(0.0, x, v, f);
+  system.referenceForce(0.0, x, v, reference);
+  EXPECT_EQ(f, reference);  // the fast gather and the per-end loop: the same operations
+  const double eps = 1e-7;
+  for (int k = 0; k < x.size(); ++k) {
+    Vector plus = x, minus = x;
+    plus[k] += eps;
+    minus[k] -= eps;
+    const double numeric = -(hingeEnergy(model.hinges, plus) - hingeEnergy(model.hinges, minus)) / (2 * eps);
+    // The energy is quadratic: central differences are exact but for round-off, ~1e-9 here.
+    EXPECT_NEAR(f[k], numeric, 1e-7 * f.cwiseAbs().maxCoeff()) << k;
+  }
+}
+
+// A small load: the strip's own weight bends it by w L^4 / (8 B) (Euler-Bernoulli). Every
+// implicit family converges to the same equilibrium, and so do the explicit ones given a stable
+// step: the hinge force enters each of them. Checked as the settled states agreeing with each
+// other (below) and with the beam formula to its discretisation error (bound 1 %: 0.18 %
+// for the 1-D beam of the same energies at 16 cells, O(a^2); the strip's measured value is
+// in the failure message).
+TEST(HingeBending, EveryIntegratorFamilySettlesTheSameStripUnderASmallLoad) {
+  Scene scene = materialSheet(16, 0.1, 0.0125, 2e-2, "\"left_clamp\"");
+  scene.cloth_material->damping_rate = 30.0;
+  scene.drag = 30.0 * 0.2 * scene.material_grid.dx * scene.material_grid.dy;
+  const double w = 0.2 * 9.8, L = 0.1, beam = w * std::pow(L, 4) / (8 * 2e-2);
+  std::vector<double> drops;
+  for (const char* integrator : {"backward-euler", "local-global", "vbd", "xpbd", "symplectic-euler"}) {
+    Scene s = scene;
+    s.integrator.name = integrator;
+    // VBD's Gauss-Seidel converges slowly on hinges this stiff (k h^2 / m ~ 1e4 at 2 ms): at
+    // 2 ms and 200 passes its unconverged steps gained energy (the health check stopped it),
+    // so it takes 0.5 ms (a finding of docs/findings.md, not hidden here).
+    const std::string name = integrator;
+    s.dt = name == "symplectic-euler" ? 2e-5 : name == "vbd" ? 5e-4 : 2e-3;
+    s.duration = 1.5;
+    if (std::string(integrator) == "local-global" || std::string(integrator) == "vbd") {
+      s.integrator.values["iterations"] = 200;
+    }
+    if (std::string(integrator) == "xpbd") {
+      s.integrator.values["substeps"] = 20;
+      s.integrator.values["iterations"] = 20;
+    }
+    const Model model = buildModel(s);
+    RunSettings settings;
+    settings.dt = s.dt;
+    settings.duration = s.duration;
+    ParticleSystem system(model, s.limits);
+    IntegratorStepper stepper(system, std::move(makeIntegrator(s.integrator).value()));
+    const RunRecord run = simulate(system, stepper, system.initialState(), settings);
+    ASSERT_FALSE(run.blowup) << integrator << ": " << (run.blowup ? run.blowup->check + " " + run.blowup->detail : "");
+    const ParticleRows& last = run.frames.back();
+    const int cols = model.grid->cols;
+    double drop = 0.0;
+    for (int r = 0; r < model.grid->rows; ++r) drop -= last(r * cols + cols - 1, 1);  // clamp at y = 0
+    drops.push_back(drop / model.grid->rows);
+    EXPECT_NEAR(drops.back() / beam, 1.0, 0.01) << integrator;
+  }
+  // Measured against backward Euler: local/global 8.6e-4 relative (200 passes a step leave its
+  // slow tail: at rest its fixed point is the truncated iteration's, not the equilibrium), VBD
+  // (200 passes), XPBD (its iteration bias) and symplectic Euler within the same: bound 2e-3.
+  for (double d : drops) EXPECT_NEAR(d / drops.front(), 1.0, 2e-3);
+}
+
+}  // namespace
+}  // namespace mysim

@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   springcheck::addGateCommand(app, exit_code);
   springcheck::addSweepCommands(app, exit_code);
   springcheck::addStabilityCommand(app, exit_code);
+  springcheck::addRefineCommand(app, exit_code);
   springcheck::addRecommendCommand(app, exit_code);
   springcheck::addReportCommand(app, exit_code);
   springcheck::addEngineCommand(app, exit_code);

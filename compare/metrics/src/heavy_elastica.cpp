@@ -35,14 +35,25 @@ ElasticaState integrate(double load, double clamp_curvature) {
 }  // namespace
 
 ElasticaTip heavyElastica(double load) {
-  // Secant on theta'(1)(kappa0) = 0 from the linear theory's kappa0 = load / 2 and a point
-  // below it (the large-deflection curvature is smaller: cos(theta) < 1 unloads the clamp).
-  double a = 0.5 * load, b = 0.45 * load;
+  // theta'(1) as a function of kappa0 = theta'(0) changes sign on [0, load / 2]: at 0 the strip
+  // curls back (theta'' < 0 throughout), at the linear theory's load / 2 the moment it needs,
+  // load * integral (1 - s) cos(theta), is at most load / 2. The Illinois variant of regula falsi
+  // keeps that bracket and converges superlinearly.
+  double a = 0.0, b = 0.5 * load;
   double fa = integrate(load, a)[1], fb = integrate(load, b)[1];
-  for (int it = 0; it < 100 && fb != 0.0 && std::abs(b - a) > 1e-15 * std::abs(b); ++it) {
+  int side = 0;
+  for (int it = 0; it < 200 && fb != 0.0 && std::abs(b - a) > 1e-14 * load; ++it) {
     const double c = b - fb * (b - a) / (fb - fa);
-    a = b, fa = fb;
-    b = c, fb = integrate(load, b)[1];
+    const double fc = integrate(load, c)[1];
+    if ((fc > 0.0) == (fb > 0.0)) {
+      b = c, fb = fc;
+      if (side == -1) fa *= 0.5;
+      side = -1;
+    } else {
+      a = b, fa = fb;
+      b = c, fb = fc;
+      side = +1;
+    }
   }
   const ElasticaState tip = integrate(load, b);
   ElasticaTip result;
@@ -54,8 +65,13 @@ ElasticaTip heavyElastica(double load) {
   return result;
 }
 
-double peirceBendingLength(double overhang, double chord_angle) {
-  return overhang * std::cbrt(std::cos(0.5 * chord_angle) / (8.0 * std::tan(chord_angle)));
+double bendingLengthFromChord(double overhang, double chord_angle) {
+  double low = 1e-6, high = kMaxElasticaLoad;  // chords from 1e-5 to 68 degrees
+  for (int it = 0; it < 45; ++it) {  // the bracket's ratio to 1 + 1e-12
+    const double mid = std::sqrt(low * high);
+    (heavyElastica(mid).chord_angle < chord_angle ? low : high) = mid;
+  }
+  return overhang / std::cbrt(std::sqrt(low * high));
 }
 
 }  // namespace springcheck

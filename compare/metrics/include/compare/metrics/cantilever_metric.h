@@ -15,7 +15,7 @@ struct CantileverReference {
   double load = 0.0;            // w L^3 / B
   double bending_length = 0.0;  // (B / w)^(1/3), m: the material's own
   ElasticaTip elastica;         // in units of L
-  double peirce_length = 0.0;   // m: what Peirce's formula reads from the elastica's chord
+  double chord_bending_length = 0.0;   // m: what Peirce's formula reads from the elastica's chord
 };
 // Nothing unless the model is such a strip with hinge bending.
 std::optional<CantileverReference> cantileverReference(const mysim::Model& model);
@@ -25,7 +25,7 @@ std::optional<CantileverReference> cantileverReference(const mysim::Model& model
 // horizontal, and Peirce's bending length from it. Nothing unless the model is a clamped
 // material strip (either bending model) lying level.
 struct CantileverReading {
-  double overhang = 0.0, drop = 0.0, reach = 0.0, chord_angle = 0.0, peirce_length = 0.0;
+  double overhang = 0.0, drop = 0.0, reach = 0.0, chord_angle = 0.0, chord_bending_length = 0.0;
 };
 std::optional<CantileverReading> readCantilever(const mysim::Model& model,
                                                 const mysim::ParticleRows& frame);

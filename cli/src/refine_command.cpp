@@ -1,0 +1,249 @@
+// springcheck refine: one material scene at several resolutions in each engine, and how each
+// quantity converges (compare/studies/refinement.h).
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+
+#include "commands.h"
+#include "compare/io/atomic_file.h"
+#include "compare/io/csv.h"
+#include "compare/io/invocation.h"
+#include "compare/io/whole_folder.h"
+#include "compare/metrics/cantilever_metric.h"
+#include "compare/metrics/closed_form.h"
+#include "compare/studies/refinement.h"
+#include "mysim/json_input.h"
+#include "mysim/scene_file.h"
+
+namespace springcheck {
+namespace {
+
+struct RefineOptions {
+  std::vector<std::string> scenes;
+  std::vector<int> resolutions{8, 16, 32};
+  std::string engines = "mysim";
+  std::string out = "out/refine";
+  std::vector<std::string> engines_files;
+  Timing timing;
+};
+
+// One run's quantities. NaN where the scene has none (a strip that is no cantilever).
+struct RefineRow {
+  std::string scene, bending, engine, status;
+  int resolution = 0;
+  int particles = 0;
+  double wall_seconds = 0.0;
+  double sag = NAN;           // m: the lowest free particle below the highest pin
+  double tip_drop = NAN;      // m, cantilever
+  double chord_angle = NAN;   // degrees, cantilever
+  double bending_length = NAN;  // m, read from the chord (bendingLengthFromChord)
+  double reference = NAN;     // m: the heavy elastica's tip drop, where it applies
+};
+
+// The quantities a row has, by name and unit, in table order.
+const std::vector<std::pair<std::string, double RefineRow::*>>& quantities() {
+  static const std::vector<std::pair<std::string, double RefineRow::*>> list{
+      {"sag_m", &RefineRow::sag},
+      {"tip_drop_m", &RefineRow::tip_drop},
+      {"chord_angle_deg", &RefineRow::chord_angle},
+      {"bending_length_m", &RefineRow::bending_length}};
+  return list;
+}
+
+double sagBelowPins(const mysim::Model& model, const mysim::ParticleRows& frame) {
+  const double g = model.gravity.norm();
+  if (g == 0.0) return NAN;
+  const mysim::Vec3 down = model.gravity / g;
+  double top = -INFINITY, lowest = -INFINITY;
+  for (int p = 0; p < model.particleCount(); ++p) {
+    const double depth = frame.row(p).head<3>().dot(down);
+    if (model.pinned[p]) {
+      top = std::max(top, -depth);
+    } else {
+      lowest = std::max(lowest, depth);
+    }
+  }
+  return std::isfinite(top) && std::isfinite(lowest) ? lowest + top : NAN;
+}
+
+// The scene file with system.resolution set, read as any scene file is.
+std::expected<mysim::Scene, std::string> sceneAt(const EngineRegistry& registry,
+                                                 const std::string& path, int resolution) {
+  auto root = mysim::readJsonFile(path, "scene file");
+  if (!root) return std::unexpected(root.error());
+  if (!root->is_object() || !root->contains("system") || !(*root)["system"].is_object() ||
+      !(*root)["system"].contains("material")) {
+    return std::unexpected(path + ": system.material: expected a material cloth (docs/materials.md): "
+                           "refine varies system.resolution, which only a material scene has");
+  }
+  (*root)["system"]["resolution"] = resolution;
+  return mysim::parseScene(root->dump(), path, registry.sceneSections());
+}
+
+std::string number(double v) {
+  if (!std::isfinite(v)) return "";
+  std::ostringstream s;
+  s << std::setprecision(10) << v;
+  return s.str();
+}
+
+int refine(const RefineOptions& o) {
+  const std::optional<EngineRegistry> registry = makeRegistry(o.engines_files);
+  if (!registry) return kBadInput;
+  std::vector<int> resolutions = o.resolutions;
+  std::sort(resolutions.begin(), resolutions.end());
+  resolutions.erase(std::unique(resolutions.begin(), resolutions.end()), resolutions.end());
+  std::vector<std::string> engines;
+  std::stringstream list(o.engines);
+  for (std::string spec; std::getline(list, spec, ',');) {
+    if (!spec.empty()) engines.push_back(spec);
+  }
+  std::vector<RefineRow> rows;
+  int failures = 0;
+  for (const std::string& path : o.scenes) {
+    for (int resolution : resolutions) {
+      auto scene = sceneAt(*registry, path, resolution);
+      if (!scene) {
+        std::cerr << "error: " << scene.error() << '\n';
+        return kBadInput;
+      }
+      RunConfig config = runConfig(*scene);
+      applyTiming(o.timing, config);
+      const mysim::Model model = mysim::buildModel(*scene);
+      for (const std::string& engine : engines) {
+        RefineRow row{scene->name, mysim::bendingModelName(scene->cloth_material->bending), engine,
+                      "", resolution, model.particleCount()};
+        auto record = registry->run(engine, model, config);
+        if (!record) {
+          std::cerr << path << " at resolution " << resolution << ", " << engine << ": "
+                    << record.error().message << '\n';
+          row.status = "refused";
+          ++failures;
+          rows.push_back(row);
+          continue;
+        }
+        row.status = record->status();
+        row.wall_seconds = record->wall_seconds;
+        if (record->blowup) {
+          std::cerr << path << " at resolution " << resolution << ", " << engine << ": "
+                    << record->status() << " at t = " << record->blowup->time << " s ("
+                    << record->blowup->check << ")\n";
+          ++failures;
+        } else if (!record->frames.empty()) {
+          const mysim::ParticleRows& last = record->frames.back();
+          row.sag = sagBelowPins(model, last);
+          if (auto reading = readCantilever(model, last)) {
+            row.tip_drop = reading->drop;
+            row.chord_angle = reading->chord_angle * 180.0 / M_PI;
+            if (reading->chord_bending_length > 0.0) row.bending_length = reading->chord_bending_length;
+          }
+          if (auto reference = cantileverReference(model)) {
+            row.reference = reference->overhang * reference->elastica.drop;
+          }
+        }
+        std::cout << row.scene << " (" << row.bending << ") at " << resolution << " cells, "
+                  << engine << ": " << row.status << ", tip drop " << number(row.tip_drop)
+                  << " m, sag " << number(row.sag) << " m, " << row.wall_seconds << " s\n";
+        rows.push_back(row);
+      }
+    }
+  }
+
+  // Per scene, engine and quantity: the estimate from the completed resolutions.
+  std::ostringstream estimates;
+  estimates << csvLine({"scene", "bending", "engine", "quantity", "finest_resolution", "finest",
+                        "observed_order", "extrapolated_limit", "finest_vs_limit_rel",
+                        "reference", "finest_vs_reference_rel", "note"})
+            << '\n';
+  std::map<std::pair<std::string, std::string>, std::vector<const RefineRow*>> series;
+  for (const RefineRow& r : rows) {
+    if (r.status == "ok") series[{r.scene, r.engine}].push_back(&r);
+  }
+  std::cout << "\nconvergence (last three resolutions; Richardson limit):\n";
+  for (const auto& [key, runs] : series) {
+    for (const auto& [name, member] : quantities()) {
+      std::vector<int> n;
+      std::vector<double> q;
+      for (const RefineRow* r : runs) {
+        if (std::isfinite(r->*member)) n.push_back(r->resolution), q.push_back(r->*member);
+      }
+      if (q.empty()) continue;
+      const RefinementEstimate e = estimateRefinement(n, q);
+      const RefineRow& finest = *runs.back();
+      const double reference = name == "tip_drop_m" ? finest.reference : NAN;
+      const double vs_limit = e.limit ? (q.back() - *e.limit) / *e.limit : NAN;
+      const double vs_reference = std::isfinite(reference) ? (q.back() - reference) / reference : NAN;
+      estimates << csvLine({key.first, finest.bending, key.second, name, std::to_string(n.back()),
+                            number(q.back()), e.order ? number(*e.order) : "",
+                            e.limit ? number(*e.limit) : "", number(vs_limit), number(reference),
+                            number(vs_reference), e.reason})
+                << '\n';
+      std::cout << "  " << key.first << " " << key.second << " " << name << ": finest "
+                << number(q.back()) << ", order "
+                << (e.order ? number(*e.order) : "- (" + e.reason + ")") << ", limit "
+                << (e.limit ? number(*e.limit) : "-")
+                << (std::isfinite(vs_reference)
+                        ? ", finest vs elastica " + number(100.0 * vs_reference) + " %"
+                        : "")
+                << '\n';
+    }
+  }
+  std::ostringstream table;
+  std::vector<std::string> header{"scene", "bending", "engine", "resolution", "particles",
+                                  "status", "wall_seconds"};
+  for (const auto& [name, member] : quantities()) header.push_back(name);
+  header.push_back("elastica_tip_drop_m");
+  table << csvLine(header) << '\n';
+  for (const RefineRow& r : rows) {
+    std::vector<std::string> fields{r.scene, r.bending, r.engine, std::to_string(r.resolution),
+                                    std::to_string(r.particles), r.status, number(r.wall_seconds)};
+    for (const auto& [name, member] : quantities()) fields.push_back(number(r.*member));
+    fields.push_back(number(r.reference));
+    table << csvLine(fields) << '\n';
+  }
+  static const FolderKind kind{"refinement folder",
+                               {"refine.csv", "refine_estimates.csv", "refine.csv.command"}};
+  auto written = writeFolderWhole(o.out, kind, [&](const std::string& staging)
+                                                   -> std::expected<void, std::string> {
+    for (const auto& [file, text] :
+         {std::pair{"refine.csv", table.str()}, std::pair{"refine_estimates.csv", estimates.str()}}) {
+      const std::string body = text;
+      if (auto ok = writeFileAtomically(staging + "/" + file, [&](std::ostream& out) { out << body; });
+          !ok) {
+        return ok;
+      }
+    }
+    return writeInvocationBeside(staging + "/refine.csv");
+  });
+  if (!written) {
+    std::cerr << "error: " << written.error() << '\n';
+    return kFailure;
+  }
+  std::cout << "results in " << o.out << " (refine.csv, refine_estimates.csv)\n";
+  return failures > 0 ? kBlowUp : kOk;
+}
+
+}  // namespace
+
+void addRefineCommand(CLI::App& app, int& exit_code) {
+  auto options = std::make_shared<RefineOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "refine",
+      "Run material scenes at several resolutions in each engine: each quantity's observed order "
+      "of convergence and Richardson limit (docs/materials.md)");
+  cmd->add_option("scenes", options->scenes, "Material scene files (system.material)")->required();
+  cmd->add_option("--resolutions", options->resolutions,
+                  "Cells across the width, three or more for an order (default 8,16,32)")
+      ->delimiter(',')
+      ->check(CLI::Range(1, 10000));
+  cmd->add_option("--engines", options->engines, "Engines, comma-separated")->capture_default_str();
+  addEnginesFileOption(cmd, options->engines_files);
+  cmd->add_option("--out", options->out, "Output directory")->capture_default_str();
+  addTimingOptions(cmd, options->timing, 1);
+  cmd->callback([options, &exit_code] { exit_code = refine(*options); });
+}
+
+}  // namespace springcheck

@@ -328,6 +328,24 @@ TEST(DeclaredEngine, ForcesThatIgnoreTimeRefuseWindAndDrivenPins) {
   EXPECT_TRUE(run) << run.error().message;
 }
 
+// An engine that does not declare hinges is refused a scene that bends by them (it would run the
+// cloth without bending and look merely soft), naming the declaration; the example engine,
+// which declares them, runs it.
+TEST(DeclaredEngine, AnEngineWithoutHingesRefusesHingeBending) {
+  const EngineRegistry registry = registryWith("tests/data/declared_engines.json");
+  mysim::Scene strip = scene(registry, "material/cantilever_strip_explicit.json");
+  strip.duration = 0.01;
+  auto run = registry.run("pysim-static", strip);
+  ASSERT_FALSE(run);
+  EXPECT_EQ(run.error().kind, EngineError::Kind::Refused);
+  EXPECT_NE(run.error().message.find("\"hinges\": true"), std::string::npos) << run.error().message;
+  EXPECT_NE(run.error().message.find("system.material.bending"), std::string::npos)
+      << run.error().message;
+  const EngineRegistry example = registryWith("examples/external/engines.json");
+  auto ran = example.run("pysim", strip);
+  EXPECT_TRUE(ran) << ran.error().message;
+}
+
 TEST(EnginesFile, MalformedEntriesAreRefusedNamingTheField) {
   const fs::path path =
       fs::temp_directory_path() / ("springcheck_engines_" + std::to_string(getpid()) + ".json");
@@ -347,6 +365,7 @@ TEST(EnginesFile, MalformedEntriesAreRefusedNamingTheField) {
             "engines[0].precision"},
            {R"({"engines": [{"name": "a", "command": ["x"], "time_dependent_forces": "no"}]})",
             "engines[0].time_dependent_forces"},
+           {R"({"engines": [{"name": "a", "command": ["x"], "hinges": 1}]})", "engines[0].hinges"},
        }) {
     std::ofstream(path) << c.text;
     EngineRegistry registry;

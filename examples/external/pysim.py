@@ -112,6 +112,14 @@ def main(model_path, out_dir):
     c = np.array(springs["damping"], dtype=float)
     damped = bool(np.any(c != 0.0))
 
+    # Hinge bending: b = sum_a w_a x_a per hinge, F_a = -k w_a b (a flat rest state).
+    hinges = model.get("hinges", {"count": 0})
+    hinge_count = int(hinges["count"])
+    if hinge_count:
+        hinge_particles = np.array(hinges["particles"], dtype=int)  # (H, 4)
+        hinge_weights = np.array(hinges["weights"], dtype=float)    # (H, 4)
+        hinge_stiffness = np.array(hinges["stiffness"], dtype=float)
+
     gravity = np.array(model["gravity"], dtype=float)
     drag = float(model["drag"])
     wind = model["wind"]
@@ -143,6 +151,11 @@ def main(model_path, out_dir):
         spring = scale[:, None] * d
         np.add.at(f, i, spring)
         np.add.at(f, j, -spring)
+        if hinge_count:
+            b = np.einsum("ha,hac->hc", hinge_weights, x[hinge_particles])
+            kb = hinge_stiffness[:, None] * b
+            for a in range(4):
+                np.add.at(f, hinge_particles[:, a], -hinge_weights[:, a, None] * kb)
         return f / mass[:, None]
 
     dt = float(model["dt"])

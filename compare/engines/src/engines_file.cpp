@@ -70,6 +70,7 @@ ExternalEngineSpec readEntry(mysim::FieldReader& r) {
     mysim::failField(r.field("precision"), "\"float64\" or \"float32\"", r.raw("precision"));
   }
   spec.time_dependent_forces = r.boolean("time_dependent_forces", spec.time_dependent_forces);
+  spec.hinges = r.boolean("hinges", spec.hinges);
   r.refuseUnknown(kSchema);
   return spec;
 }

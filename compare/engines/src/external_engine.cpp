@@ -219,10 +219,17 @@ std::expected<Execution, EngineError> execute(const ExternalEngineSpec& spec,
   return run;
 }
 
-// What the engine declared of itself against what the scene needs: forces that ignore time
-// cannot take wind or driven pins, so such a scene is refused, naming both sides.
+// What the engine declared of itself against what the scene needs: hinge bending needs an engine
+// that reads hinges; forces that ignore time cannot take wind or driven pins. Such a scene is
+// refused, naming both sides.
 std::optional<EngineError> refusal(const ExternalEngineSpec& spec, const mysim::Model& model,
                                    const RunConfig& config) {
+  if (!model.hinges.empty() && !spec.hinges) {
+    return EngineError{EngineError::Kind::Refused,
+                       "engine '" + spec.name + "' does not declare hinges (\"hinges\": true in " +
+                           spec.source + "); " + config.source +
+                           " bends by hinges (system.material.bending), which it would ignore"};
+  }
   if (spec.time_dependent_forces) return std::nullopt;
   const char* driver = model.wind         ? "wind (forces.wind)"
                        : model.pin_motion ? "driven pins (forces.pin_motion)"

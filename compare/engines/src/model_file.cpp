@@ -68,6 +68,19 @@ std::expected<void, std::string> writeModelFile(const std::string& dir, const my
     springs["damping"].push_back(s.damping);
     springs["family"].push_back(mysim::familyName(s.family));
   }
+  // Hinges (mysim/hinge.h): b = sum_a weight[a] x[particles[a]], E = 1/2 stiffness |b|^2, flat
+  // at rest (rest_angle 0 for every one: the quadratic model bends about a flat rest state).
+  json hinges = {{"count", model.hinges.size()},
+                 {"particles", json::array()},
+                 {"weights", json::array()},
+                 {"stiffness", json::array()},
+                 {"rest_angle", json::array()}};
+  for (const mysim::Hinge& h : model.hinges) {
+    hinges["particles"].push_back(h.particle);
+    hinges["weights"].push_back(h.weight);
+    hinges["stiffness"].push_back(h.stiffness);
+    hinges["rest_angle"].push_back(0.0);
+  }
   const long steps = mysim::stepCount(config.run);
   json j = {{"format", "springcheck-model"},
             {"version", 1},
@@ -78,6 +91,7 @@ std::expected<void, std::string> writeModelFile(const std::string& dir, const my
                                         : mysim::systemKindName(given.kind)},
             {"particles", particles},
             {"springs", springs},
+            {"hinges", hinges},
             {"gravity", vec3(model.gravity)},
             {"drag", model.drag},
             {"wind", nullptr},

@@ -22,6 +22,10 @@ struct ExternalEngineSpec {
   // pins, and refuses such scenes instead of running them wrong).
   std::string precision = "float64";
   bool time_dependent_forces = true;
+  // Whether it applies the model file's hinges (bending, docs/external-engines.md). False, the
+  // default: a scene with hinge bending is refused for it, since an engine that never read the
+  // field would run the cloth without bending and look merely soft.
+  bool hinges = false;
   std::string source;         // the engines file, for messages
   std::string dir;            // its folder: {dir}, and relative programs resolve against it
 };

@@ -14,6 +14,7 @@
 #include "compare/io/whole_folder.h"
 #include "compare/metrics/cantilever_metric.h"
 #include "compare/metrics/closed_form.h"
+#include "compare/metrics/run_metrics.h"
 #include "compare/studies/refinement.h"
 #include "mysim/json_input.h"
 #include "mysim/scene_file.h"
@@ -30,43 +31,24 @@ struct RefineOptions {
   Timing timing;
 };
 
-// One run's quantities. NaN where the scene has none (a strip that is no cantilever).
+// One run's shape measurements: every catalogue metric marked `refined` that the scene has.
 struct RefineRow {
   std::string scene, bending, engine, status;
   int resolution = 0;
   int particles = 0;
   double wall_seconds = 0.0;
-  double sag = NAN;           // m: the lowest free particle below the highest pin
-  double tip_drop = NAN;      // m, cantilever
-  double chord_angle = NAN;   // degrees, cantilever
-  double bending_length = NAN;  // m, read from the chord (bendingLengthFromChord)
-  double reference = NAN;     // m: the heavy elastica's tip drop, where it applies
+  std::map<std::string, double> values;
+  double reference = NAN;  // the closed form's value (the heavy elastica's tip drop), where one is
+  std::string reference_quantity;
 };
 
-// The quantities a row has, by name and unit, in table order.
-const std::vector<std::pair<std::string, double RefineRow::*>>& quantities() {
-  static const std::vector<std::pair<std::string, double RefineRow::*>> list{
-      {"sag_m", &RefineRow::sag},
-      {"tip_drop_m", &RefineRow::tip_drop},
-      {"chord_angle_deg", &RefineRow::chord_angle},
-      {"bending_length_m", &RefineRow::bending_length}};
-  return list;
-}
-
-double sagBelowPins(const mysim::Model& model, const mysim::ParticleRows& frame) {
-  const double g = model.gravity.norm();
-  if (g == 0.0) return NAN;
-  const mysim::Vec3 down = model.gravity / g;
-  double top = -INFINITY, lowest = -INFINITY;
-  for (int p = 0; p < model.particleCount(); ++p) {
-    const double depth = frame.row(p).head<3>().dot(down);
-    if (model.pinned[p]) {
-      top = std::max(top, -depth);
-    } else {
-      lowest = std::max(lowest, depth);
-    }
+// The catalogue's refined metrics, in its order.
+std::vector<const MetricInfo*> refinedMetrics() {
+  std::vector<const MetricInfo*> list;
+  for (const MetricInfo& info : metricCatalog()) {
+    if (info.refined && !info.pair) list.push_back(&info);
   }
-  return std::isfinite(top) && std::isfinite(lowest) ? lowest + top : NAN;
+  return list;
 }
 
 // The scene file with system.resolution set, read as any scene file is.
@@ -133,20 +115,19 @@ int refine(const RefineOptions& o) {
                     << record->blowup->check << ")\n";
           ++failures;
         } else if (!record->frames.empty()) {
-          const mysim::ParticleRows& last = record->frames.back();
-          row.sag = sagBelowPins(model, last);
-          if (auto reading = readCantilever(model, last)) {
-            row.tip_drop = reading->drop;
-            row.chord_angle = reading->chord_angle * 180.0 / M_PI;
-            if (reading->chord_bending_length > 0.0) row.bending_length = reading->chord_bending_length;
+          const EngineMetrics m = engineMetrics(model, {engine, *record});
+          for (const MetricInfo* info : refinedMetrics()) {
+            if (auto v = metricValue(m, info->name)) row.values[info->name] = *v;
           }
-          if (auto reference = cantileverReference(model)) {
-            row.reference = reference->overhang * reference->elastica.drop;
+          if (m.closed_form && cantileverReference(model)) {
+            row.reference = m.closed_form->exact;
+            row.reference_quantity = "tip_drop";
           }
         }
         std::cout << row.scene << " (" << row.bending << ") at " << resolution << " cells, "
-                  << engine << ": " << row.status << ", tip drop " << number(row.tip_drop)
-                  << " m, sag " << number(row.sag) << " m, " << row.wall_seconds << " s\n";
+                  << engine << ": " << row.status;
+        for (const auto& [name, value] : row.values) std::cout << ", " << name << " " << number(value);
+        std::cout << " (" << row.wall_seconds << " s)\n";
         rows.push_back(row);
       }
     }
@@ -154,7 +135,7 @@ int refine(const RefineOptions& o) {
 
   // Per scene, engine and quantity: the estimate from the completed resolutions.
   std::ostringstream estimates;
-  estimates << csvLine({"scene", "bending", "engine", "quantity", "finest_resolution", "finest",
+  estimates << csvLine({"scene", "bending", "engine", "quantity", "unit", "finest_resolution", "finest",
                         "observed_order", "extrapolated_limit", "finest_vs_limit_rel",
                         "reference", "finest_vs_reference_rel", "note"})
             << '\n';
@@ -162,31 +143,34 @@ int refine(const RefineOptions& o) {
   for (const RefineRow& r : rows) {
     if (r.status == "ok") series[{r.scene, r.engine}].push_back(&r);
   }
-  std::cout << "\nconvergence (last three resolutions; Richardson limit):\n";
+  std::cout << "\nconvergence (the last three resolutions; Richardson limit):\n";
   for (const auto& [key, runs] : series) {
-    for (const auto& [name, member] : quantities()) {
+    for (const MetricInfo* info : refinedMetrics()) {
+      const std::string& name = info->name;
       std::vector<int> n;
       std::vector<double> q;
       for (const RefineRow* r : runs) {
-        if (std::isfinite(r->*member)) n.push_back(r->resolution), q.push_back(r->*member);
+        if (auto v = r->values.find(name); v != r->values.end()) {
+          n.push_back(r->resolution), q.push_back(v->second);
+        }
       }
       if (q.empty()) continue;
       const RefinementEstimate e = estimateRefinement(n, q);
       const RefineRow& finest = *runs.back();
-      const double reference = name == "tip_drop_m" ? finest.reference : NAN;
-      const double vs_limit = e.limit ? (q.back() - *e.limit) / *e.limit : NAN;
+      const double reference = finest.reference_quantity == name ? finest.reference : NAN;
+      const double vs_limit = e.limit && *e.limit != 0.0 ? (q.back() - *e.limit) / *e.limit : NAN;
       const double vs_reference = std::isfinite(reference) ? (q.back() - reference) / reference : NAN;
-      estimates << csvLine({key.first, finest.bending, key.second, name, std::to_string(n.back()),
-                            number(q.back()), e.order ? number(*e.order) : "",
-                            e.limit ? number(*e.limit) : "", number(vs_limit), number(reference),
-                            number(vs_reference), e.reason})
+      estimates << csvLine({key.first, finest.bending, key.second, name, info->unit,
+                            std::to_string(n.back()), number(q.back()),
+                            e.order ? number(*e.order) : "", e.limit ? number(*e.limit) : "",
+                            number(vs_limit), number(reference), number(vs_reference), e.reason})
                 << '\n';
-      std::cout << "  " << key.first << " " << key.second << " " << name << ": finest "
-                << number(q.back()) << ", order "
+      std::cout << "  " << key.first << " " << key.second << " " << name << " [" << info->unit
+                << "]: finest " << number(q.back()) << ", order "
                 << (e.order ? number(*e.order) : "- (" + e.reason + ")") << ", limit "
                 << (e.limit ? number(*e.limit) : "-")
                 << (std::isfinite(vs_reference)
-                        ? ", finest vs elastica " + number(100.0 * vs_reference) + " %"
+                        ? ", finest vs closed form " + number(100.0 * vs_reference) + " %"
                         : "")
                 << '\n';
     }
@@ -194,13 +178,16 @@ int refine(const RefineOptions& o) {
   std::ostringstream table;
   std::vector<std::string> header{"scene", "bending", "engine", "resolution", "particles",
                                   "status", "wall_seconds"};
-  for (const auto& [name, member] : quantities()) header.push_back(name);
-  header.push_back("elastica_tip_drop_m");
+  for (const MetricInfo* info : refinedMetrics()) header.push_back(info->name);
+  header.push_back("closed_form_value");
   table << csvLine(header) << '\n';
   for (const RefineRow& r : rows) {
     std::vector<std::string> fields{r.scene, r.bending, r.engine, std::to_string(r.resolution),
                                     std::to_string(r.particles), r.status, number(r.wall_seconds)};
-    for (const auto& [name, member] : quantities()) fields.push_back(number(r.*member));
+    for (const MetricInfo* info : refinedMetrics()) {
+      auto v = r.values.find(info->name);
+      fields.push_back(v == r.values.end() ? "" : number(v->second));
+    }
     fields.push_back(number(r.reference));
     table << csvLine(fields) << '\n';
   }

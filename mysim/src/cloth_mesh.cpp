@@ -15,9 +15,11 @@ std::vector<Eigen::Vector3i> gridTriangles(const GridShape& grid) {
   return triangles;
 }
 
-std::vector<Vec3> vertexNormals(const GridShape& grid, const Vector& x) {
-  std::vector<Vec3> normals(grid.rows * grid.cols, Vec3::Zero());
-  for (const Eigen::Vector3i& t : gridTriangles(grid)) {
+namespace {
+
+std::vector<Vec3> normalsOf(const std::vector<Eigen::Vector3i>& triangles, const Vector& x) {
+  std::vector<Vec3> normals(x.size() / 3, Vec3::Zero());
+  for (const Eigen::Vector3i& t : triangles) {
     const Vec3 face = (at3(x, t[1]) - at3(x, t[0])).cross(at3(x, t[2]) - at3(x, t[0]));
     const double length = face.norm();
     if (length == 0.0) continue;  // a collapsed triangle has no direction to add
@@ -30,19 +32,39 @@ std::vector<Vec3> vertexNormals(const GridShape& grid, const Vector& x) {
   return normals;
 }
 
-void writeObj(std::ostream& out, const GridShape& grid, const Vector& x) {
-  const std::vector<Vec3> normals = vertexNormals(grid, x);
+void writeObjBody(std::ostream& out, const std::vector<Eigen::Vector3i>& triangles, const Vector& x) {
+  const std::vector<Vec3> normals = normalsOf(triangles, x);
   out.precision(9);
-  out << "# springcheck cloth " << grid.rows << " x " << grid.cols << "\n";
-  for (int p = 0; p < grid.rows * grid.cols; ++p) {
+  for (std::size_t p = 0; p < normals.size(); ++p) {
     out << "v " << x[3 * p] << ' ' << x[3 * p + 1] << ' ' << x[3 * p + 2] << '\n';
   }
   for (const Vec3& n : normals) out << "vn " << n.x() << ' ' << n.y() << ' ' << n.z() << '\n';
-  for (const Eigen::Vector3i& t : gridTriangles(grid)) {
+  for (const Eigen::Vector3i& t : triangles) {
     out << "f";
     for (int k = 0; k < 3; ++k) out << ' ' << t[k] + 1 << "//" << t[k] + 1;
     out << '\n';
   }
+}
+
+}  // namespace
+
+std::vector<Vec3> vertexNormals(const GridShape& grid, const Vector& x) {
+  return normalsOf(gridTriangles(grid), x.head(3 * grid.rows * grid.cols));
+}
+
+void writeObj(std::ostream& out, const std::vector<Eigen::Vector3i>& triangles, const Vector& x) {
+  out << "# springcheck cloth, " << x.size() / 3 << " vertices\n";
+  writeObjBody(out, triangles, x);
+}
+
+void writeObj(std::ostream& out, const GridShape& grid, const Vector& x) {
+  out << "# springcheck cloth " << grid.rows << " x " << grid.cols << "\n";
+  writeObjBody(out, gridTriangles(grid), x.head(3 * grid.rows * grid.cols));
+}
+
+std::vector<Eigen::Vector3i> clothTriangles(const Model& model) {
+  if (model.grid) return gridTriangles(*model.grid);
+  return model.mesh_triangles;
 }
 
 }  // namespace mysim

@@ -1,6 +1,7 @@
 #include "mysim/scene.h"
 
 #include "mysim/circle_system.h"
+#include "mysim/mesh_cloth.h"
 #include "mysim/particle_system.h"
 
 namespace mysim {
@@ -16,6 +17,10 @@ Model buildModel(const Scene& scene) {
       buildChain(scene.chain, model);
       break;
     case SystemKind::Cloth:
+      if (scene.cloth_mesh) {  // checked when the scene was read
+        (void)buildMeshCloth(*scene.cloth_mesh, *scene.cloth_material, scene.cloth.origin, model);
+        break;
+      }
       buildCloth(scene.cloth, model);
       if (scene.cloth_material) {
         applyClothMaterial(*scene.cloth_material, scene.material_grid.dx, scene.material_grid.dy,

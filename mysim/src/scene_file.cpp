@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "mysim/cloth_material.h"
+#include "mysim/mesh_cloth.h"
 #include "mysim/json_input.h"
 #include "mysim/run_limits.h"
 
@@ -84,11 +85,19 @@ void readChain(FieldReader& system, Scene& scene) {
 
 // "material": what the cloth is made of (cloth_material.h); its springs, hinges and masses
 // follow from it at the scene's resolution.
-ClothMaterial readClothMaterial(FieldReader& r) {
+ClothMaterial readClothMaterial(FieldReader& r, bool mesh) {
   ClothMaterial m;
   m.density = r.positive("density");
   m.stretch_stiffness = r.positive("stretch_stiffness");
-  m.shear_stiffness = r.positive("shear_stiffness");
+  if (!mesh) {
+    m.shear_stiffness = r.positive("shear_stiffness");
+  } else if (r.has("shear_stiffness")) {
+    throw FieldError{r.field("shear_stiffness"),
+                     "not for a mesh cloth: a triangle mesh of springs has Poisson's ratio 1/3, so "
+                     "its shear stiffness is 3/8 of stretch_stiffness (docs/materials.md)"};
+  } else {
+    m.shear_stiffness = 0.375 * m.stretch_stiffness;
+  }
   m.damping_rate = r.nonNegative("damping_rate", 0.0);
   FieldReader bending = r.object("bending");
   const std::string model = bending.text("model");
@@ -106,6 +115,75 @@ ClothMaterial readClothMaterial(FieldReader& r) {
   return m;
 }
 
+// A cloth from a triangle mesh and its material (mesh_cloth.h): "mesh" is {"shape": "disc",
+// "radius"} (resolution: its rings) or {"obj": FILE} (beside the scene file unless absolute; its
+// own resolution); "pins" may also be {"within": R}, every vertex within R of the origin.
+void readMeshCloth(FieldReader& system, Scene& scene) {
+  for (const char* grid_only : {"rows", "cols", "width", "height", "particle_mass", "structural",
+                                "shear", "flex", "orientation"}) {
+    if (system.has(grid_only)) {
+      throw FieldError{system.field(grid_only), "not with system.mesh: a grid cloth's field"};
+    }
+  }
+  if (!system.has("material")) {
+    throw FieldError{system.field("material"),
+                     "expected the material a mesh cloth is made of (docs/materials.md)"};
+  }
+  FieldReader material = system.object("material");
+  scene.cloth_material = readClothMaterial(material, true);
+  if (scene.cloth_material->bending == BendingModel::Flex) {
+    throw FieldError{system.field("material") + ".bending.model",
+                     "\"hinge\" for a mesh cloth (flex springs join grid nodes two apart)"};
+  }
+  FieldReader mesh = system.object("mesh");
+  TriangleMesh triangles;
+  if (mesh.has("obj")) {
+    if (system.has("resolution")) {
+      throw FieldError{system.field("resolution"), "not with mesh.obj: the file is its resolution"};
+    }
+    std::string file = mesh.text("obj");
+    if (!file.empty() && file[0] != '/') {
+      const std::size_t slash = scene.source.find_last_of('/');
+      if (slash != std::string::npos) file = scene.source.substr(0, slash + 1) + file;
+    }
+    auto read = readObjMesh(file);
+    if (!read) throw FieldError{mesh.field("obj"), read.error()};
+    triangles = std::move(*read);
+  } else {
+    const std::string shape = mesh.text("shape");
+    if (shape != "disc") failField(mesh.field("shape"), "\"disc\" (or give \"obj\")", mesh.raw("shape"));
+    const double radius = mesh.positive("radius");
+    triangles = discMesh(radius, static_cast<int>(system.integer("resolution", 1, 500)));
+  }
+  mesh.refuseUnknown("docs/materials.md");
+  scene.cloth_mesh = std::move(triangles);
+  const Vec3 origin = system.vec3("origin", Vec3::Zero());
+  scene.cloth.origin = origin;
+  // Built once here, so a mesh that cannot be a cloth is refused with the scene.
+  Model trial;
+  auto built = buildMeshCloth(*scene.cloth_mesh, *scene.cloth_material, origin, trial);
+  if (!built) throw FieldError{system.field("mesh"), built.error()};
+  scene.mesh_drag = *built;
+  const int n = trial.particleCount();
+  scene.pins.clear();
+  if (system.has("pins") && system.raw("pins").is_object()) {
+    FieldReader pins = system.object("pins");
+    const double within = pins.positive("within");
+    pins.refuseUnknown("docs/materials.md");
+    for (int p = 0; p < n; ++p) {
+      if ((at3(trial.start_position, p) - origin).norm() <= within * (1.0 + 1e-12)) {
+        scene.pins.push_back(p);
+      }
+    }
+    if (scene.pins.empty()) {
+      throw FieldError{system.field("pins") + ".within", "a radius that holds at least one vertex"};
+    }
+  } else {
+    scene.pins = readPins(system, n, {}, 0, 0);
+  }
+  scene.start_velocity = system.vec3("velocity", Vec3::Zero());
+}
+
 // A cloth from its material: the grid from "resolution" (cells across the width), the
 // constants from "material"; "pins": "left_clamp" holds the left edge in a clamp one cell deep.
 void readMaterialCloth(FieldReader& system, Scene& scene) {
@@ -118,7 +196,7 @@ void readMaterialCloth(FieldReader& system, Scene& scene) {
   }
   ClothShape& c = scene.cloth;
   FieldReader material = system.object("material");
-  scene.cloth_material = readClothMaterial(material);
+  scene.cloth_material = readClothMaterial(material, false);
   const int resolution = static_cast<int>(system.integer("resolution", 1, 10'000));
   c.width = system.positive("width");
   c.height = system.positive("height");
@@ -163,6 +241,10 @@ void readMaterialCloth(FieldReader& system, Scene& scene) {
 }
 
 void readCloth(FieldReader& system, Scene& scene) {
+  if (system.has("mesh")) {
+    readMeshCloth(system, scene);
+    return;
+  }
   if (system.has("material")) {
     readMaterialCloth(system, scene);
     return;
@@ -263,6 +345,10 @@ std::pair<double, double> sizeOf(const Scene& scene) {
     case SystemKind::Chain:
       return {double(scene.chain.particles), double(scene.chain.particles - 1)};
     case SystemKind::Cloth: {
+      if (scene.cloth_mesh) {
+        const double n = double(scene.cloth_mesh->vertices.size());
+        return {n, 3 * n};
+      }
       const double n = double(scene.cloth.rows) * scene.cloth.cols;
       return {n, 6 * n};
     }
@@ -396,7 +482,9 @@ void applyMaterialForces(Scene& scene) {
       throw FieldError{"forces.drag",
                        "not with system.material.damping_rate: the rate gives the drag"};
     }
-    scene.drag = m.damping_rate * m.density * scene.material_grid.dx * scene.material_grid.dy;
+    scene.drag = scene.cloth_mesh ? scene.mesh_drag
+                                  : m.damping_rate * m.density * scene.material_grid.dx *
+                                        scene.material_grid.dy;
   }
   if (m.bending == BendingModel::Hinge &&
       scene.integrator.preconditioner == CgPreconditioner::Ssor) {
@@ -406,8 +494,10 @@ void applyMaterialForces(Scene& scene) {
   }
 }
 
-Scene readScene(const json& root, const std::vector<EngineSection>& sections) {
+Scene readScene(const json& root, const std::string& source,
+                const std::vector<EngineSection>& sections) {
   Scene scene;
+  scene.source = source;  // mesh files are found beside it
   FieldReader top(root, "");
   scene.name = top.text("name", "");
   // The name names output folders: one plain path component, never "..", "/" or a hidden name.
@@ -473,7 +563,7 @@ std::string stem(const std::string& path) {
 std::expected<Scene, std::string> sceneFrom(const nlohmann::json& root, const std::string& source,
                                             const std::vector<EngineSection>& sections) {
   return readFields<Scene>(source, [&] {
-    Scene scene = readScene(root, sections);
+    Scene scene = readScene(root, source, sections);
     scene.source = source;
     if (scene.name.empty()) scene.name = stem(source);
     return scene;

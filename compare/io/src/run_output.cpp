@@ -92,6 +92,10 @@ void writeFrameObj(std::ostream& out, const mysim::Model& model, const mysim::Pa
     mysim::writeObj(out, {model.grid->rows, model.grid->cols}, positions(f));
     return;
   }
+  if (!model.mesh_triangles.empty()) {
+    mysim::writeObj(out, model.mesh_triangles, positions(f));
+    return;
+  }
   out.precision(9);
   out << "# springcheck particles " << f.rows() << ", springs as lines\n";
   for (int p = 0; p < f.rows(); ++p) out << "v " << f(p, 0) << ' ' << f(p, 1) << ' ' << f(p, 2) << '\n';
@@ -187,10 +191,8 @@ std::expected<void, std::string> writeRunFiles(const std::string& dir_name,
     if (!done) return done;
   }
 
-  if (model.kind == mysim::SystemKind::Cloth && model.grid) {
-    done = writeFileAtomically(in("final.obj"), [&](std::ostream& out) {
-      mysim::writeObj(out, {model.grid->rows, model.grid->cols}, positions(last));
-    });
+  if (model.kind == mysim::SystemKind::Cloth && (model.grid || !model.mesh_triangles.empty())) {
+    done = writeFileAtomically(in("final.obj"), [&](std::ostream& out) { writeFrameObj(out, model, last); });
     if (!done) return done;
   }
 

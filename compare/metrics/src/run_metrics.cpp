@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "compare/metrics/mirror_symmetry.h"
 #include "compare/metrics/penetration_metric.h"
@@ -40,6 +41,17 @@ EngineMetrics engineMetrics(const mysim::Model& model, const EngineRun& run) {
       m.penetration_count_max = std::max(m.penetration_count_max, p.count);
     }
   }
+  if (!r.frames.empty()) {
+    if (auto reading = readCantilever(model, r.frames.back())) {
+      m.tip_drop = reading->drop;
+      m.chord_angle = reading->chord_angle * 180.0 / std::numbers::pi;
+      if (reading->chord_bending_length > 0.0) m.bending_length = reading->chord_bending_length;
+    }
+    if (auto drape = readDrapeTest(model, r.frames.back())) {
+      m.drape_coefficient = drape->drape_coefficient;
+      m.drape_folds = drape->folds;
+    }
+  }
   m.settling_time = settlingTime(r);
   m.max_strain = maxStrainOverRun(model, r);
   m.momentum = momentumDrift(model, r);
@@ -48,8 +60,8 @@ EngineMetrics engineMetrics(const mysim::Model& model, const EngineRun& run) {
 
 Surface surfaceOf(const mysim::Model& model, const mysim::ParticleRows& frame) {
   Surface s{frame.leftCols<3>(), {}};
-  if (model.grid) {
-    s.triangles = mysim::gridTriangles(*model.grid);
+  if (model.grid || !model.mesh_triangles.empty()) {
+    s.triangles = mysim::clothTriangles(model);
   } else {
     for (const mysim::Spring& sp : model.springs) s.triangles.emplace_back(sp.i, sp.j, sp.j);
     if (s.triangles.empty()) {
@@ -116,7 +128,19 @@ const std::vector<MetricInfo>& metricCatalog() {
       {"closed_form_error", false, "m or rel", "error against the scene's closed form",
        [](E m) { return m.closed_form ? V(m.closed_form->error) : V(); }},
       {"sag_lowest", false, "m", "lowest point below the pins at the end",
-       [](E m) { return V(m.sag_lowest); }},
+       [](E m) { return V(m.sag_lowest); }, nullptr, true},
+      {"tip_drop", false, "m", "a clamped strip's free end below the clamp's edge at the end",
+       [](E m) { return m.tip_drop; }, nullptr, true},
+      {"chord_angle", false, "deg", "a clamped strip's chord from clamp edge to tip, below level",
+       [](E m) { return m.chord_angle; }, nullptr, true},
+      {"bending_length", false, "m",
+       "the bending length a clamped strip's chord reads (the standard's l/2 at 41.5 deg)",
+       [](E m) { return m.bending_length; }, nullptr, true},
+      {"drape_coefficient", false, "1",
+       "Cusick drape coefficient (A_shadow - A_support) / (A_specimen - A_support) at the end",
+       [](E m) { return m.drape_coefficient; }, nullptr, true},
+      {"drape_folds", false, "1", "folds (lobes) of a draped disc's outline at the end",
+       [](E m) { return m.drape_folds; }, nullptr, true},
       {"sag_free_middle", false, "m", "middle of the free edge below the pins at the end",
        [](E m) { return m.sag_free_middle; }},
       {"penetration_max", false, "m", "deepest node inside a collider, any frame",

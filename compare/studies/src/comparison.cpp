@@ -79,6 +79,10 @@ void printComparison(std::ostream& out, const Comparison& c) {
   out << '\n';
   for (const MetricInfo& info : metricCatalog()) {
     if (info.pair) continue;
+    // A shape measurement only some scenes have (a cantilever's, a drape test's): only where one is.
+    bool any = !info.refined;
+    for (const EngineMetrics& m : c.engines) any |= metricValue(m, info.name).has_value();
+    if (!any) continue;
     out << "  " << left(info.name + " [" + info.unit + "]", 34);
     for (std::size_t e = 0; e < c.engines.size(); ++e) {
       out << cell(format(metricValue(c.engines[e], info.name)), engine_width[e]);

@@ -17,5 +17,10 @@ std::vector<Vec3> vertexNormals(const GridShape& grid, const Vector& x);
 
 // Writes the cloth as a Wavefront OBJ mesh: v, vn and f lines (1-based, v//vn).
 void writeObj(std::ostream& out, const GridShape& grid, const Vector& x);
+// The same for any triangle list (a mesh cloth), normals as vertexNormals computes them.
+void writeObj(std::ostream& out, const std::vector<Eigen::Vector3i>& triangles, const Vector& x);
+
+// A cloth model's triangles: its grid's, or its mesh's (empty for chains and particles).
+std::vector<Eigen::Vector3i> clothTriangles(const Model& model);
 
 }  // namespace mysim

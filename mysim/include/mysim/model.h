@@ -45,6 +45,7 @@ struct Model {
   std::optional<PinMotion> pin_motion;
   std::vector<Collider> colliders;  // static, frictionless; contacts resolved in this order
   std::optional<GridShape> grid;
+  std::vector<Eigen::Vector3i> mesh_triangles;  // a mesh cloth's triangles (a grid's: gridTriangles)
   std::optional<MaterialSource> material;  // set when the scene described a material
 
   int particleCount() const { return static_cast<int>(mass.size()); }

@@ -12,6 +12,7 @@
 #include "mysim/cloth_material.h"
 #include "mysim/integrator.h"
 #include "mysim/model.h"
+#include "mysim/triangle_mesh.h"
 
 namespace mysim {
 
@@ -54,6 +55,8 @@ struct Scene {
   std::optional<ClothMaterial> cloth_material;  // cloth from its material (docs/materials.md)
   MaterialGrid material_grid;                   // its grid, when cloth_material is set
   bool material_clamped = false;                // pins "left_clamp"
+  std::optional<TriangleMesh> cloth_mesh;       // a mesh cloth (with cloth_material)
+  double mesh_drag = 0.0;                       // N s/m its damping rate means
   std::vector<ExplicitParticle> particles;  // kind == Particles
   std::vector<Spring> springs;              // kind == Particles
   std::vector<int> pins;                    // chain and cloth: pinned particle indices

@@ -5,7 +5,9 @@
 #include <string_view>
 #include <vector>
 
+#include "compare/metrics/cantilever_metric.h"
 #include "compare/metrics/closed_form.h"
+#include "compare/metrics/drape_test_metric.h"
 #include "compare/metrics/drape_metric.h"
 #include "compare/metrics/energy_metric.h"
 #include "compare/metrics/momentum_metric.h"
@@ -37,6 +39,11 @@ struct EngineMetrics {
   long steps = 0;
   double sag_lowest = 0.0;                  // m below the pins, last frame
   std::optional<double> sag_free_middle;    // m, last frame
+  // A clamped material strip (cantilever_metric.h), last frame: the free end's drop below the
+  // clamp's edge, the chord's angle, the bending length that chord reads.
+  std::optional<double> tip_drop, chord_angle, bending_length;
+  // A mesh cloth pinned in its middle (drape_test_metric.h), last frame.
+  std::optional<double> drape_coefficient, drape_folds;
   SagSeries sag;                            // per frame (empty for the circle)
   std::vector<double> penetration_deepest;  // m, per frame (empty without colliders)
   std::optional<ClosedFormError> closed_form;
@@ -99,6 +106,8 @@ struct MetricInfo {
   std::string description;
   std::function<std::optional<double>(const EngineMetrics&)> of_run = nullptr;
   std::function<std::optional<double>(const PairMetrics&)> of_pair = nullptr;
+  // A measurement of the settled shape that `springcheck refine` follows across resolutions.
+  bool refined = false;
 };
 const std::vector<MetricInfo>& metricCatalog();
 const MetricInfo* findMetric(std::string_view name);

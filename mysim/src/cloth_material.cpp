@@ -59,9 +59,18 @@ double applyClothMaterial(const ClothMaterial& material, double dx, double dy, M
   const auto springs = latticeSprings(material.stretch_stiffness, material.shear_stiffness, dx, dy);
   for (Spring& s : model.springs.edit()) {
     switch (s.family) {
-      case SpringFamily::Structural:  // along a row (x) or down a column
-        s.stiffness = std::abs(s.j - s.i) == 1 ? springs->structural_x : springs->structural_y;
+      case SpringFamily::Structural: {  // along a row (x) or down a column
+        const bool along_row = std::abs(s.j - s.i) == 1;
+        s.stiffness = along_row ? springs->structural_x : springs->structural_y;
+        // A spring on the sheet's edge stands for half a cell (the lattice's springs each stand
+        // for one): half the stiffness, or a strip of R cells stretches as R + 1 (25 % too stiff
+        // at 4 cells across).
+        const int ri = s.i / grid.cols, ci = s.i % grid.cols, rj = s.j / grid.cols, cj = s.j % grid.cols;
+        const bool on_edge = along_row ? (ri == rj && (ri == 0 || ri == grid.rows - 1))
+                                       : (ci == cj && (ci == 0 || ci == grid.cols - 1));
+        if (on_edge) s.stiffness *= 0.5;
         break;
+      }
       case SpringFamily::Shear:
         s.stiffness = springs->shear;
         break;

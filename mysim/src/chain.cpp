@@ -8,7 +8,8 @@ void buildChain(const ChainShape& shape, Model& model) {
   model.pinned.assign(n, 0);
   model.start_position.resize(3 * n);
   model.start_velocity = Vector::Zero(3 * n);
-  const Vec3 step = shape.rest_length * shape.direction.normalized();
+  const double spacing = shape.spacing > 0.0 ? shape.spacing : shape.rest_length;
+  const Vec3 step = spacing * shape.direction.normalized();
   for (int p = 0; p < n; ++p) at3(model.start_position, p) = shape.origin + p * step;
   model.springs.clear();
   for (int p = 0; p + 1 < n; ++p) {

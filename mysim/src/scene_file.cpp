@@ -74,6 +74,7 @@ void readChain(FieldReader& system, Scene& scene) {
   ChainShape& c = scene.chain;
   c.particles = static_cast<int>(system.integer("particles", 2, 10'000'000));
   c.rest_length = system.positive("rest_length");
+  c.spacing = system.positive("spacing", c.rest_length);
   c.particle_mass = system.positive("particle_mass");
   c.stiffness = system.positive("stiffness");
   c.damping = system.nonNegative("damping", 0.0);

@@ -175,6 +175,99 @@ std::optional<ClosedFormError> twoPinCatenaryError(const mysim::Model& model, co
   return e;
 }
 
+
+// The damped oscillator: a chain of two, particle 0 pinned, no gravity, the bob started at the
+// spring's rest length with a velocity v0 along it. Its stretch x obeys m x'' + c x' + k x = 0
+// (spring damping acts along the spring), x(0) = 0, x'(0) = v0, with w0 = sqrt(k / m) and
+// zeta = c / (2 sqrt(k m)):
+//   under  x = v0 / wd e^(-zeta w0 t) sin(wd t),  wd = w0 sqrt(1 - zeta^2)
+//   critical (|zeta - 1| < 1e-9)  x = v0 t e^(-w0 t)
+//   over   x = v0 / (r1 - r2) (e^(r1 t) - e^(r2 t)),  r = -w0 (zeta -+ sqrt(zeta^2 - 1)).
+// The error is the largest |x(t) - exact| over the frames, m.
+double dampedOscillator(double w0, double zeta, double v0, double t) {
+  if (std::abs(zeta - 1.0) < 1e-9) return v0 * t * std::exp(-w0 * t);
+  if (zeta < 1.0) {
+    const double wd = w0 * std::sqrt(1.0 - zeta * zeta);
+    return v0 / wd * std::exp(-zeta * w0 * t) * std::sin(wd * t);
+  }
+  const double root = std::sqrt(zeta * zeta - 1.0);
+  const double r1 = -w0 * (zeta - root), r2 = -w0 * (zeta + root);
+  return v0 / (r1 - r2) * (std::exp(r1 * t) - std::exp(r2 * t));
+}
+
+std::optional<ClosedFormError> dampedOscillatorError(const mysim::Model& model, const UniformChain& c,
+                                                     const mysim::RunRecord& run) {
+  const mysim::Vec3 v0 = mysim::at3(model.start_velocity, 1);
+  const double along = v0.dot(c.direction);
+  if ((v0 - along * c.direction).norm() > 1e-12 * std::max(1.0, v0.norm()) || model.drag != 0.0) {
+    return std::nullopt;
+  }
+  const double w0 = std::sqrt(c.stiffness / c.particle_mass);
+  const double zeta = c.damping / (2.0 * std::sqrt(c.stiffness * c.particle_mass));
+  double worst = 0.0, peak = 0.0;
+  for (std::size_t f = 0; f < run.frames.size(); ++f) {
+    const double x = (run.frames[f].row(1).head<3>().transpose() - c.origin).dot(c.direction) -
+                     c.rest_length;
+    const double exact = dampedOscillator(w0, zeta, along, run.times[f]);
+    worst = std::max(worst, std::abs(x - exact));
+    peak = std::max(peak, std::abs(exact));
+  }
+  const char* regime = std::abs(zeta - 1.0) < 1e-9 ? "critically damped"
+                       : zeta < 1.0                ? "underdamped"
+                                                   : "overdamped";
+  return ClosedFormError{std::string(regime) + " oscillator", worst, peak};
+}
+
+// A taut chain: N free masses m between two pins, springs of stiffness k stretched to spacing a
+// (tension T = k (a - rest)), no gravity, started with velocities across the line. Small
+// transverse motion is a sum of modes j = 1..N, shapes phi_j(i) = sin(j pi i / (N + 1)),
+// frequencies w_j = 2 sqrt(T / (m a)) sin(j pi / (2 (N + 1))) (the beaded string; exact for the
+// linearised discrete system, Rayleigh, "The theory of sound", sec. 120). The mode the start
+// velocity loads most is followed: its modal coordinate's upward zero crossings, linearly
+// interpolated between frames, give the measured frequency; the error is relative.
+std::optional<ClosedFormError> tautChainModeError(const mysim::Model& model, const UniformChain& c,
+                                                  const mysim::RunRecord& run) {
+  const int free = c.particles - 2;
+  const mysim::Vec3 first = mysim::at3(model.start_position, 0);
+  const mysim::Vec3 last = mysim::at3(model.start_position, c.particles - 1);
+  const double a = (last - first).norm() / (c.particles - 1);
+  const double tension = c.stiffness * (a - c.rest_length);
+  if (!(tension > 0.0) || c.damping != 0.0 || model.drag != 0.0) return std::nullopt;
+  const mysim::Vec3 line = (last - first).normalized();
+  // The transverse direction: that of the start velocities.
+  mysim::Vec3 across = mysim::Vec3::Zero();
+  for (int i = 1; i <= free; ++i) across += mysim::at3(model.start_velocity, i);
+  across -= across.dot(line) * line;
+  if (across.norm() == 0.0) return std::nullopt;
+  across.normalize();
+  auto shape = [&](int j, int i) { return std::sin(j * std::numbers::pi * i / (free + 1)); };
+  int mode = 1;
+  double loaded = 0.0;
+  for (int j = 1; j <= free; ++j) {
+    double q = 0.0;
+    for (int i = 1; i <= free; ++i) q += shape(j, i) * mysim::at3(model.start_velocity, i).dot(across);
+    if (std::abs(q) > loaded) loaded = std::abs(q), mode = j;
+  }
+  const double exact = 2.0 * std::sqrt(tension / (c.particle_mass * a)) *
+                       std::sin(mode * std::numbers::pi / (2.0 * (free + 1)));
+  std::vector<double> crossings;
+  double previous = 0.0;
+  for (std::size_t f = 0; f < run.frames.size(); ++f) {
+    double q = 0.0;
+    for (int i = 1; i <= free; ++i) {
+      q += shape(mode, i) * (run.frames[f].row(i).head<3>().transpose() - first).dot(across);
+    }
+    if (f > 0 && previous < 0.0 && q >= 0.0) {
+      crossings.push_back(run.times[f - 1] + (run.times[f] - run.times[f - 1]) * previous / (previous - q));
+    }
+    previous = q;
+  }
+  if (crossings.size() < 3) return std::nullopt;
+  const double measured =
+      2.0 * std::numbers::pi * (crossings.size() - 1) / (crossings.back() - crossings.front());
+  return ClosedFormError{"taut chain, mode " + std::to_string(mode) + " frequency",
+                         std::abs(measured / exact - 1.0), exact};
+}
 }  // namespace
 
 std::optional<std::vector<mysim::Vec3>> twoPinCatenaryNodes(const mysim::Model& model) {
@@ -197,14 +290,20 @@ std::optional<ClosedFormError> closedFormError(const mysim::Model& model,
   const std::optional<UniformChain> chain = uniformChain(model);
   std::vector<char> only_first_pinned(model.particleCount(), 0);
   if (!only_first_pinned.empty()) only_first_pinned[0] = 1;
-  if (!chain || model.gravity.norm() == 0.0 || model.wind || model.pin_motion ||
-      !model.colliders.empty()) {
+  if (!chain || model.wind || model.pin_motion || !model.colliders.empty()) return std::nullopt;
+  std::vector<char> both_ends_pinned(model.particleCount(), 0);
+  if (model.particleCount() >= 3) both_ends_pinned.front() = both_ends_pinned.back() = 1;
+  if (model.gravity.norm() == 0.0) {  // the oscillator and the taut chain
+    if (model.particleCount() == 2 && model.pinned == only_first_pinned) {
+      return dampedOscillatorError(model, *chain, run);
+    }
+    if (model.particleCount() >= 3 && model.pinned == both_ends_pinned) {
+      return tautChainModeError(model, *chain, run);
+    }
     return std::nullopt;
   }
-  std::vector<char> both_ends_pinned(model.particleCount(), 0);
-  if (model.particleCount() >= 3) {
-    both_ends_pinned.front() = both_ends_pinned.back() = 1;
-    if (model.pinned == both_ends_pinned) return twoPinCatenaryError(model, *chain, run);
+  if (model.particleCount() >= 3 && model.pinned == both_ends_pinned) {
+    return twoPinCatenaryError(model, *chain, run);
   }
   if (model.pinned != only_first_pinned) return std::nullopt;
   const double alignment = chain->direction.dot(model.gravity.normalized());

@@ -9,6 +9,7 @@ namespace mysim {
 struct ChainShape {
   int particles = 2;
   double rest_length = 0.1;     // m, between neighbours
+  double spacing = 0.0;         // m, between neighbours at the start; 0 = rest_length (a taut chain: more)
   double particle_mass = 0.01;  // kg
   double stiffness = 100.0;     // N/m
   double damping = 0.0;         // N s/m along each spring

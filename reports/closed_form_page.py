@@ -35,10 +35,11 @@ def draw(fig, ctx):
     engines = sorted({e for _, _, _, errors in rows for e in errors})
     ax = fig.add_axes((0.06, 0.3, 0.9, 0.55))
     ax.axis("off")
-    unit = {"pendulum period": "rel"}
+    def unit(quantity):  # frequencies and periods are compared relatively, shapes in metres
+        return "rel" if "period" in quantity or "frequency" in quantity else "m"
     cells = []
     for scene, quantity, exact, errors in rows:
-        line = [scene, quantity, f"{exact:.4g}", unit.get(quantity, "m")]
+        line = [scene, quantity, f"{exact:.4g}", unit(quantity)]
         for e in engines:
             if e in errors:
                 value, floor = errors[e]

@@ -37,27 +37,32 @@ std::expected<void, std::string> checkSupported(const mysim::Model& model, Bulle
   auto refuse = [&](const std::string& field, const std::string& why) {
     return std::unexpected(prefix + field + ": " + why);
   };
-  // The classic solver scales velocities by (1 - kDP) once a step, the same for every node: that
-  // equals viscous drag c only when c h / m is one number.
-  if (model.drag > 0.0) {
-    const double m = uniformFreeMass(model);
-    if (m == 0.0) {
-      return refuse("forces.drag",
-                    "the classic solver damps every node by one factor, which is viscous drag "
-                    "only with equal masses on all free particles; give them one mass, set drag "
-                    "to 0, or use bullet-deformable");
-    }
-    if (model.drag * settings.dt / m >= 1.0) {
-      return refuse("forces.drag",
-                    "drag * dt / mass must be < 1 (kDP scales v by 1 - it); take a smaller "
-                    "integrator.dt or a smaller drag");
-    }
-  }
   if (!model.hinges.empty()) {
     return refuse("system.material.bending",
                   "the classic solver has no hinge energy (its bending constraints are links "
                   "between nodes two apart: the flex model); use \"model\": \"flex\", or "
                   "bullet-deformable or bullet-implicit, which take hinges as a force");
+  }
+  // The classic solver scales velocities by (1 - kDP) once a step, the same for every node: that
+  // equals viscous drag c only when c h / m is one number.
+  const std::string drag_field =
+      model.material ? "system.material.damping_rate" : "forces.drag";
+  if (model.drag > 0.0) {
+    const double m = uniformFreeMass(model);
+    if (m == 0.0) {
+      return refuse(drag_field,
+                    "the classic solver damps every node by one factor, which is viscous drag "
+                    "only with equal masses on all free particles" +
+                        std::string(model.material
+                                        ? " (a material cloth's edges carry less mass)"
+                                        : "; give them one mass") +
+                        ", set the damping to 0, or use bullet-deformable");
+    }
+    if (model.drag * settings.dt / m >= 1.0) {
+      return refuse(drag_field,
+                    "drag * dt / mass must be < 1 (kDP scales v by 1 - it); take a smaller "
+                    "integrator.dt or a smaller drag");
+    }
   }
   for (int k = 0; k < static_cast<int>(model.springs.size()); ++k) {
     if (model.springs[k].damping > 0.0) {

@@ -244,6 +244,22 @@ std::expected<json, std::string> reportManifest(const std::string& results_dir,
               "energy of every integrator and engine");
     }
   }
+  // Mesh refinement (springcheck refine): the table, its estimates and the command that made them.
+  const fs::path refine = results / "refine" / "refine.csv";
+  if (fs::exists(refine) && fs::exists(results / "refine" / "refine_estimates.csv")) {
+    m["refine"] = {{"table", refine.string()},
+                   {"estimates", (results / "refine" / "refine_estimates.csv").string()},
+                   {"command", invocationBeside(refine.string())}};
+  } else {
+    m["refine"] = nullptr;
+    const std::string scenes = d + "/scenes/material/";
+    missing(refine.string(),
+            "springcheck refine " + scenes + "cantilever_strip.json " + scenes +
+                "cantilever_strip_flex.json " + scenes + "cusick_drape.json --resolutions 4,8,16 "
+                "--out " + r + "/refine",
+            "convergence as the mesh is refined: the cantilever against the elastica, flex "
+            "springs, the drape test");
+  }
   m["headlines"] = reportHeadlines(m["comparisons"], m["stability"]["scenes"]);
   const fs::path bench = results / "bench" / "bench.json";
   m["bench"] = fs::exists(bench) ? json(bench.string()) : json();

@@ -10,7 +10,7 @@ namespace {
 using ElasticaState = std::array<double, 4>;
 
 ElasticaState integrate(double load, double clamp_curvature) {
-  constexpr int kSteps = 20'000;
+  constexpr int kSteps = 5000;  // RK4 error ~ (2e-4)^4 times the load squared: below 1e-12 of L
   const double h = 1.0 / kSteps;
   auto rate = [load](double sigma, const ElasticaState& u) {
     return ElasticaState{u[1], -load * (1.0 - sigma) * std::cos(u[0]), std::cos(u[0]),

@@ -41,7 +41,9 @@ EngineMetrics engineMetrics(const mysim::Model& model, const EngineRun& run) {
       m.penetration_count_max = std::max(m.penetration_count_max, p.count);
     }
   }
-  if (!r.frames.empty()) {
+  // Shape measurements of the settled state: none for a run that stopped early (its last frame
+  // is only the last healthy one).
+  if (!r.frames.empty() && !r.blowup) {
     if (auto reading = readCantilever(model, r.frames.back())) {
       m.tip_drop = reading->drop;
       m.chord_angle = reading->chord_angle * 180.0 / std::numbers::pi;

@@ -1,0 +1,82 @@
+"""Convergence as the mesh is refined (springcheck refine): one page per scene, each shape quantity
+against the resolution for every engine, its Richardson limit and, where the scene has one, the
+closed form (the heavy elastica's tip drop)."""
+from report_style import Page, coincident, number, plot_area, read_csv
+
+LABELS = {  # how a quantity reads on an axis (units from the estimates table)
+    "sag_lowest": "lowest point below the pins",
+    "tip_drop": "tip drop below the clamp",
+    "chord_angle": "chord angle below level",
+    "bending_length": "bending length read from the chord",
+    "drape_coefficient": "drape coefficient",
+    "drape_folds": "folds",
+}
+
+
+def page(scene, rows, estimates, command):
+    quantities = [q for q in LABELS if any(number(r[q]) is not None for r in rows)]
+    if "tip_drop" in quantities:  # a strip's lowest point is its tip: one panel, not two
+        quantities.remove("sag_lowest")
+    bending = rows[0]["bending"]
+
+    def draw(fig, ctx):
+        grid = plot_area(fig, rows=2, cols=2, hspace=0.55, wspace=0.25, top=0.84)
+        notes, drawn = [], {}
+        engines = sorted({r["engine"] for r in rows})
+        for k, quantity in enumerate(quantities[:4]):
+            ax = fig.add_subplot(grid[k // 2, k % 2])
+            unit, orders = "", []
+            for engine in engines:
+                series = [(int(r["resolution"]), number(r[quantity])) for r in rows
+                          if r["engine"] == engine and r["status"] == "ok" and number(r[quantity]) is not None]
+                if not series:
+                    continue
+                drawn.setdefault(quantity, {})[engine] = series
+                style = ctx.styles.line(ctx.styles.key(engine))
+                ax.plot([n for n, _ in series], [v for _, v in series], label=engine, **style)
+                est = next((e for e in estimates if e["engine"] == engine and e["quantity"] == quantity), None)
+                if not est:
+                    continue
+                unit = est["unit"]
+                if est["extrapolated_limit"]:
+                    ax.axhline(float(est["extrapolated_limit"]), color=style["color"], linestyle=":", linewidth=1)
+                orders.append(f"{engine}: " + (f"order {float(est['observed_order']):.2f}" if est["observed_order"]
+                                                else "no order"))
+                if est["reference"] and not any(n.startswith("elastica") for n in notes):
+                    ax.axhline(float(est["reference"]), color="black", linewidth=1.2, label="heavy elastica")
+                if est["reference"]:
+                    notes.append(f"elastica: {engine} at {est['finest_resolution']} cells is "
+                                 f"{100 * float(est['finest_vs_reference_rel']):+.3f} % off")
+            ax.set_xscale("log", base=2)
+            ax.set_xlabel("cells across (resolution)")
+            ax.set_ylabel(f"[{unit}]" if unit and unit != "1" else "")
+            ax.set_title(LABELS[quantity] + "\n" + "; ".join(orders), fontsize=9)
+            ax.grid(True, alpha=0.3)
+            if k == 0:
+                ax.legend(fontsize=7, loc="center right")
+        hidden = {}
+        for quantity, series in drawn.items():
+            for pair in coincident(series):
+                hidden.setdefault(pair, []).append(LABELS[quantity])
+        for (a, b), where in hidden.items():
+            notes.append(f"{b} lies under {a} within 1 % ({', '.join(where)})")
+        return ["; ".join(dict.fromkeys(notes)) + "."] if notes else []
+
+    caption = (f"{scene} ({bending} bending) at each resolution. Dotted: the Richardson limit of the "
+               "last three resolutions (only where their differences shrink); black: the closed form. "
+               "Above each panel: each engine's observed order ('no order': not converging at these "
+               "resolutions).")
+    return Page(f"refine_{scene}", f"Does {scene} converge as its mesh is refined?", caption, draw,
+                command=command)
+
+
+def pages(m):
+    refine = m.get("refine")
+    if not refine:
+        return []
+    rows, estimates = read_csv(refine["table"]), read_csv(refine["estimates"])
+    result = []
+    for scene in dict.fromkeys(r["scene"] for r in rows):
+        result.append(page(scene, [r for r in rows if r["scene"] == scene],
+                           [e for e in estimates if e["scene"] == scene], refine.get("command") or None))
+    return result

@@ -64,7 +64,9 @@ def comparison_page(c, state):
         xyz = positions(reference["final_state"])
         faces = read_faces(reference["final"])
         values = [v for d in distance.values() for v in d.values() if v and v > 0]
-        norm = colors.LogNorm(vmin=max(min(values), 1e-12), vmax=max(values)) if values else None
+        # Distances all below 1e-12 m (engines equal to round-off) still get a scale, 1e-12 to 1e-11.
+        low = max(min(values), 1e-12) if values else None
+        norm = colors.LogNorm(vmin=low, vmax=max(max(values), 10 * low)) if values else None
         cmap = cm.viridis
         cols = 2 if len(others) > 1 else 1
         rows = max(1, math.ceil(len(others) / cols))

@@ -48,8 +48,11 @@ def frame(fig, page, number, total, stamp, notes):
     fig.text(0.06, 0.155, "\n".join(lines), va="top", fontsize=8.5 if len(lines) <= 5 else 7,
              color="0.15")
     if page.command:  # under the title: the page's own command, apart from the caption's text
-        fig.text(0.5, 0.922, f"reproduce: {page.command}", ha="center", fontsize=7, family="monospace",
-                 color="0.3")
+        # A long one (refine over several scenes) in two lines of smaller type, never cut at the edges.
+        command = f"reproduce: {page.command}"
+        lines = textwrap.wrap(command, 190, break_on_hyphens=False) if len(command) > 150 else [command]
+        fig.text(0.5, 0.925, "\n".join(lines[:2]) + (" ..." if len(lines) > 2 else ""), ha="center",
+                 va="center", fontsize=7 if len(lines) == 1 else 6, family="monospace", color="0.3")
     fig.text(0.06, 0.02, f"springcheck {stamp['version']} (commit {stamp['commit']})  ·  "
              f"{stamp['date']}  ·  {stamp['machine']}\n{stamp['command']}", fontsize=7, color="0.4",
              va="bottom")

@@ -20,7 +20,7 @@ def page(scene, rows, estimates, command):
     bending = rows[0]["bending"]
 
     def draw(fig, ctx):
-        grid = plot_area(fig, rows=2, cols=2, hspace=0.55, wspace=0.25, top=0.84)
+        grid = plot_area(fig, rows=2, cols=2, hspace=0.55, wspace=0.28, top=0.84, left=0.08)
         notes, drawn = [], {}
         engines = sorted({r["engine"] for r in rows})
         for k, quantity in enumerate(quantities[:4]):
@@ -60,6 +60,12 @@ def page(scene, rows, estimates, command):
                 hidden.setdefault(pair, []).append(LABELS[quantity])
         for (a, b), where in hidden.items():
             notes.append(f"{b} lies under {a} within 1 % ({', '.join(where)})")
+        for engine in engines:
+            failed = [r for r in rows if r["engine"] == engine and r["status"] != "ok"]
+            if failed:
+                notes.append(f"{engine} did not complete at " + ", ".join(r["resolution"] for r in failed)
+                             + " cells (" + ", ".join(sorted({r["status"] for r in failed}))
+                             + "; refine's output says when)")
         return ["; ".join(dict.fromkeys(notes)) + "."] if notes else []
 
     caption = (f"{scene} ({bending} bending) at each resolution. Dotted: the Richardson limit of the "

@@ -13,11 +13,15 @@ LABELS = {  # how a quantity reads on an axis (units from the estimates table)
 }
 
 
+REFERENCES = {"tip_drop": "heavy elastica", "sag_lowest": "continuous elastic catenary"}
+
+
 def page(scene, rows, estimates, command):
     quantities = [q for q in LABELS if any(number(r[q]) is not None for r in rows)]
     if "tip_drop" in quantities:  # a strip's lowest point is its tip: one panel, not two
         quantities.remove("sag_lowest")
     bending = rows[0]["bending"]
+    bent = f" ({bending} bending)" if not bending.startswith("none") else ""
 
     def draw(fig, ctx):
         grid = plot_area(fig, rows=2, cols=2, hspace=0.55, wspace=0.28, top=0.84, left=0.08)
@@ -42,10 +46,11 @@ def page(scene, rows, estimates, command):
                     ax.axhline(float(est["extrapolated_limit"]), color=style["color"], linestyle=":", linewidth=1)
                 orders.append(f"{engine}: " + (f"order {float(est['observed_order']):.2f}" if est["observed_order"]
                                                 else "no order"))
-                if est["reference"] and not any(n.startswith("elastica") for n in notes):
-                    ax.axhline(float(est["reference"]), color="black", linewidth=1.2, label="heavy elastica")
+                if est["reference"] and not any(n.startswith("closed form") for n in notes):
+                    ax.axhline(float(est["reference"]), color="black", linewidth=1.2,
+                               label=REFERENCES.get(quantity, "closed form"))
                 if est["reference"]:
-                    notes.append(f"elastica: {engine} at {est['finest_resolution']} cells is "
+                    notes.append(f"closed form: {engine} at {est['finest_resolution']} cells is "
                                  f"{100 * float(est['finest_vs_reference_rel']):+.3f} % off")
             ax.set_xscale("log", base=2)
             ax.set_xlabel("cells across (resolution)")
@@ -68,7 +73,7 @@ def page(scene, rows, estimates, command):
                              + "; refine's output says when)")
         return ["; ".join(dict.fromkeys(notes)) + "."] if notes else []
 
-    caption = (f"{scene} ({bending} bending) at each resolution. Dotted: the Richardson limit of the "
+    caption = (f"{scene}{bent} at each resolution. Dotted: the Richardson limit of the "
                "last three resolutions (only where their differences shrink); black: the closed form. "
                "Above each panel: each engine's observed order ('no order': not converging at these "
                "resolutions).")

@@ -55,9 +55,11 @@ $B stability --scene scenes/matched/cloth_hanging.json --mass-ratios 1,1e4 --out
 $B stability --scene scenes/matched/cloth_hanging.json --name cloth_hanging_large_steps \
   --engines mysim:xpbd,mysim:local-global,mysim:vbd,mysim:backward-euler --stiffness-scales 1,100 \
   --mass-ratios 1,1e4 --max-h-omega 3000 --out "$OUT/stability" >/dev/null
-# Mesh refinement: the cantilever against the elastica, the flex-spring strip, the drape test.
+# Mesh refinement: the cantilever against the elastica, the flex-spring strip, the drape test,
+# the cable against the continuous catenary.
 $B refine scenes/material/cantilever_strip.json scenes/material/cantilever_strip_flex.json \
-  scenes/material/cusick_drape.json --resolutions 4,8,16 --engines mysim,bullet-implicit \
+  scenes/material/cusick_drape.json scenes/material/cable_catenary.json --resolutions 4,8,16 \
+  --engines mysim,bullet-implicit \
   --out "$OUT/refine" >/dev/null
 $B report --results "$OUT" --out "$OUT/report"
 echo "main job done in $(( $(date +%s) - start )) s; report: $OUT/report/report.pdf"

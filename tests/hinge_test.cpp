@@ -151,14 +151,17 @@ TEST(HingeBending, EveryIntegratorFamilySettlesTheSameStripUnderASmallLoad) {
   scene.drag = 30.0 * 0.2 * scene.material_grid.dx * scene.material_grid.dy;
   const double w = 0.2 * 9.8, L = 0.1, beam = w * std::pow(L, 4) / (8 * 2e-2);
   std::vector<double> drops;
-  for (const char* integrator : {"backward-euler", "local-global", "vbd", "xpbd", "symplectic-euler"}) {
+  // The explicit integrators take the same force (ParticleSystem::force): held to mysim's
+  // symplectic Euler through pysim on scenes/material/cantilever_strip_explicit.json (a gate),
+  // not here, where their 0.02 ms step made this test the slowest under the sanitizers.
+  for (const char* integrator : {"backward-euler", "local-global", "vbd", "xpbd"}) {
     Scene s = scene;
     s.integrator.name = integrator;
     // VBD's Gauss-Seidel converges slowly on hinges this stiff (k h^2 / m ~ 1e4 at 2 ms): at
     // 2 ms and 200 passes its unconverged steps gained energy (the health check stopped it),
     // so it takes 0.5 ms (a finding of docs/findings.md, not hidden here).
     const std::string name = integrator;
-    s.dt = name == "symplectic-euler" ? 2e-5 : name == "vbd" ? 5e-4 : 2e-3;
+    s.dt = name == "vbd" ? 5e-4 : 2e-3;
     s.duration = 0.6;  // drag rate 30/s: the first mode decays by e^-9 by then
     if (std::string(integrator) == "local-global" || std::string(integrator) == "vbd") {
       s.integrator.values["iterations"] = 200;
@@ -184,7 +187,7 @@ TEST(HingeBending, EveryIntegratorFamilySettlesTheSameStripUnderASmallLoad) {
   }
   // Measured against backward Euler: local/global 8.6e-4 relative (200 passes a step leave its
   // slow tail: at rest its fixed point is the truncated iteration's, not the equilibrium), VBD
-  // (200 passes), XPBD (its iteration bias) and symplectic Euler within the same: bound 2e-3.
+  // (200 passes) and XPBD (its iteration bias) within the same: bound 2e-3.
   for (double d : drops) EXPECT_NEAR(d / drops.front(), 1.0, 2e-3);
 }
 

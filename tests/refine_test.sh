@@ -10,7 +10,7 @@ root=$2
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 "$exe" refine "$root/scenes/material/cantilever_strip.json" \
-  "$root/scenes/material/cantilever_strip_flex.json" --resolutions 4,8,16 --out "$out/r" >/dev/null
+  "$root/scenes/material/cantilever_strip_flex.json" --resolutions 3,6,12 --out "$out/r" >/dev/null
 est="$out/r/refine_estimates.csv"
 # columns: scene,bending,engine,quantity,unit,finest_resolution,finest,observed_order,
 #          extrapolated_limit,finest_vs_limit_rel,reference,finest_vs_reference_rel,note

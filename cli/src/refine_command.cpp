@@ -14,6 +14,7 @@
 #include "compare/io/whole_folder.h"
 #include "compare/metrics/cantilever_metric.h"
 #include "compare/metrics/closed_form.h"
+#include "compare/metrics/elastic_catenary.h"
 #include "compare/metrics/run_metrics.h"
 #include "compare/studies/refinement.h"
 #include "mysim/json_input.h"
@@ -49,6 +50,24 @@ std::vector<const MetricInfo*> refinedMetrics() {
     if (info.refined && !info.pair) list.push_back(&info);
   }
   return list;
+}
+
+// A material chain pinned at its two ends, level under gravity: the continuous elastic
+// catenary's midspan sag, the limit its sag converges to (elastic_catenary.h).
+std::optional<double> cableReference(const mysim::Scene& scene) {
+  if (scene.kind != mysim::SystemKind::Chain || scene.chain_end_mass == 0.0) return std::nullopt;
+  const mysim::ChainShape& c = scene.chain;
+  const double g = scene.gravity.norm();
+  if (g == 0.0 || std::abs(c.direction.normalized().dot(scene.gravity / g)) > 1e-12 ||
+      scene.pins != std::vector<int>{0, c.particles - 1}) {
+    return std::nullopt;
+  }
+  const int links = c.particles - 1;
+  const ElasticCatenary cable =
+      levelElasticCatenary(c.spacing * links, c.rest_length * links,
+                           c.particle_mass / c.rest_length * g, c.stiffness * c.rest_length);
+  if (cable.horizontal_tension == 0.0) return std::nullopt;
+  return cable.midspan_sag;
 }
 
 // The scene file with system.resolution set, read as any scene file is.
@@ -96,8 +115,10 @@ int refine(const RefineOptions& o) {
       applyTiming(o.timing, config);
       const mysim::Model model = mysim::buildModel(*scene);
       for (const std::string& engine : engines) {
-        RefineRow row{scene->name, mysim::bendingModelName(scene->cloth_material->bending), engine,
-                      "", resolution, model.particleCount()};
+        RefineRow row{scene->name,
+                      scene->cloth_material ? mysim::bendingModelName(scene->cloth_material->bending)
+                                            : "none (chain)",
+                      engine, "", resolution, model.particleCount()};
         auto record = registry->run(engine, model, config);
         if (!record) {
           std::cerr << path << " at resolution " << resolution << ", " << engine << ": "
@@ -122,6 +143,10 @@ int refine(const RefineOptions& o) {
           if (m.closed_form && cantileverReference(model)) {
             row.reference = m.closed_form->exact;
             row.reference_quantity = "tip_drop";
+          }
+          if (auto cable = cableReference(*scene)) {
+            row.reference = *cable;
+            row.reference_quantity = "sag_lowest";
           }
         }
         std::cout << row.scene << " (" << row.bending << ") at " << resolution << " cells, "

@@ -6,23 +6,6 @@
 #include "mysim/cloth_mesh.h"
 
 namespace mysim {
-namespace {
-
-// The cells cut along their other diagonal, (r, c) to (r + 1, c + 1): gridTriangles cuts from
-// (r, c + 1) to (r + 1, c).
-std::vector<Eigen::Vector3i> otherGridTriangles(const GridShape& grid) {
-  std::vector<Eigen::Vector3i> triangles;
-  for (int r = 0; r + 1 < grid.rows; ++r) {
-    for (int c = 0; c + 1 < grid.cols; ++c) {
-      const int a = r * grid.cols + c, b = a + 1, d = a + grid.cols, e = d + 1;
-      triangles.emplace_back(a, b, e);
-      triangles.emplace_back(a, e, d);
-    }
-  }
-  return triangles;
-}
-
-}  // namespace
 
 const char* bendingModelName(BendingModel model) {
   return model == BendingModel::Hinge ? "hinge" : "flex";
@@ -100,7 +83,7 @@ double applyClothMaterial(const ClothMaterial& material, double dx, double dy, M
     // axis is the continuum's and a cantilever stays level across its width.
     const double half = 0.5 * material.bending_rigidity;
     model.hinges = meshHinges(gridTriangles(grid), model.start_position, half);
-    const std::vector<Hinge> other = meshHinges(otherGridTriangles(grid), model.start_position, half);
+    const std::vector<Hinge> other = meshHinges(gridTriangles(grid, true), model.start_position, half);
     model.hinges.insert(model.hinges.end(), other.begin(), other.end());
   }
   model.material = MaterialSource{material, dx, dy, false};

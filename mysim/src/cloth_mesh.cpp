@@ -2,14 +2,19 @@
 
 namespace mysim {
 
-std::vector<Eigen::Vector3i> gridTriangles(const GridShape& grid) {
+std::vector<Eigen::Vector3i> gridTriangles(const GridShape& grid, bool other_cut) {
   std::vector<Eigen::Vector3i> triangles;
   triangles.reserve(2 * (grid.rows - 1) * (grid.cols - 1));
   for (int r = 0; r + 1 < grid.rows; ++r) {
     for (int c = 0; c + 1 < grid.cols; ++c) {
       const int a = r * grid.cols + c, b = a + 1, d = a + grid.cols, e = d + 1;
-      triangles.emplace_back(a, b, d);
-      triangles.emplace_back(b, e, d);
+      if (other_cut) {
+        triangles.emplace_back(a, b, e);
+        triangles.emplace_back(a, e, d);
+      } else {
+        triangles.emplace_back(a, b, d);
+        triangles.emplace_back(b, e, d);
+      }
     }
   }
   return triangles;

@@ -15,6 +15,9 @@ Model buildModel(const Scene& scene) {
       break;
     case SystemKind::Chain:
       buildChain(scene.chain, model);
+      if (scene.chain_end_mass > 0.0) {  // a material chain: its ends carry half a link
+        model.mass[0] = model.mass[model.particleCount() - 1] = scene.chain_end_mass;
+      }
       break;
     case SystemKind::Cloth:
       if (scene.cloth_mesh) {  // checked when the scene was read

@@ -70,7 +70,50 @@ void readCircle(FieldReader& system, Scene& scene) {
   }
 }
 
+// A chain (a rope, a cable) from its material: "length" and "resolution" (links) give the links,
+// "material" {linear_density kg/m, axial_stiffness EA in N, damping_rate 1/s} their constants:
+// rest length / resolution, stiffness EA / rest, a link's mass on every node but the two ends,
+// which carry half (docs/materials.md). "span" (default: length) lays it out taut or slack
+// along "direction"; pins as any chain, or "ends".
+void readMaterialChain(FieldReader& system, Scene& scene) {
+  for (const char* derived : {"particles", "rest_length", "spacing", "particle_mass", "stiffness",
+                              "damping"}) {
+    if (system.has(derived)) {
+      throw FieldError{system.field(derived),
+                       "not with system.material: the material, length and resolution give it "
+                       "(docs/materials.md)"};
+    }
+  }
+  FieldReader material = system.object("material");
+  const double density = material.positive("linear_density");
+  const double axial = material.positive("axial_stiffness");
+  const double rate = material.nonNegative("damping_rate", 0.0);
+  material.refuseUnknown("docs/materials.md");
+  const double length = system.positive("length");
+  const int links = static_cast<int>(system.integer("resolution", 1, 10'000'000));
+  ChainShape& c = scene.chain;
+  c.particles = links + 1;
+  c.rest_length = length / links;
+  c.spacing = system.positive("span", length) / links;
+  c.particle_mass = density * c.rest_length;
+  c.stiffness = axial / c.rest_length;
+  c.origin = system.vec3("origin", Vec3::Zero());
+  c.direction = system.unitVec3("direction", Vec3::UnitX());
+  scene.chain_end_mass = 0.5 * c.particle_mass;
+  scene.material_drag = rate * c.particle_mass;
+  scene.start_velocity = system.vec3("velocity", Vec3::Zero());
+  if (system.has("pins") && system.raw("pins") == "ends") {
+    scene.pins = {0, links};
+  } else {
+    scene.pins = readPins(system, c.particles, {0}, 0, 0);
+  }
+}
+
 void readChain(FieldReader& system, Scene& scene) {
+  if (system.has("material")) {
+    readMaterialChain(system, scene);
+    return;
+  }
   ChainShape& c = scene.chain;
   c.particles = static_cast<int>(system.integer("particles", 2, 10'000'000));
   c.rest_length = system.positive("rest_length");
@@ -82,6 +125,16 @@ void readChain(FieldReader& system, Scene& scene) {
   c.direction = system.unitVec3("direction", Vec3::UnitX());
   scene.start_velocity = system.vec3("velocity", Vec3::Zero());
   scene.pins = readPins(system, c.particles, {0}, 0, 0);
+}
+
+// "orientation": whether a grid cloth starts hanging (rows along -y) or horizontal (along -z).
+bool readHanging(FieldReader& system) {
+  const std::string orientation = system.text("orientation", "horizontal");
+  if (orientation != "horizontal" && orientation != "hanging") {
+    failField(system.field("orientation"), "\"horizontal\" or \"hanging\"",
+              system.raw("orientation"));
+  }
+  return orientation == "hanging";
 }
 
 // "material": what the cloth is made of (cloth_material.h); its springs, hinges and masses
@@ -218,12 +271,7 @@ void readMaterialCloth(FieldReader& system, Scene& scene) {
   const SpringParameters placeholder{1.0, 0.0};  // replaced by the lattice's constants
   c.structural = c.shear = placeholder;
   if (scene.cloth_material->bending == BendingModel::Flex) c.flex = placeholder;
-  const std::string orientation = system.text("orientation", "horizontal");
-  if (orientation != "horizontal" && orientation != "hanging") {
-    failField(system.field("orientation"), "\"horizontal\" or \"hanging\"",
-              system.raw("orientation"));
-  }
-  c.hanging = orientation == "hanging";
+  c.hanging = readHanging(system);
   c.origin = system.vec3("origin", Vec3::Zero());
   if (clamped) {
     // The clamp's two columns straddle its edge at origin.x: the overhang is `width` from it at
@@ -256,12 +304,7 @@ void readCloth(FieldReader& system, Scene& scene) {
   c.width = system.positive("width");
   c.height = system.positive("height");
   c.particle_mass = system.positive("particle_mass");
-  const std::string orientation = system.text("orientation", "horizontal");
-  if (orientation != "horizontal" && orientation != "hanging") {
-    failField(system.field("orientation"), "\"horizontal\" or \"hanging\"",
-              system.raw("orientation"));
-  }
-  c.hanging = orientation == "hanging";
+  c.hanging = readHanging(system);
   c.origin = system.vec3("origin", Vec3::Zero());
   c.structural = readFamily(system, "structural");
   c.shear = readFamily(system, "shear");
@@ -527,6 +570,12 @@ Scene readScene(const json& root, const std::string& source,
 
   readIntegrator(top, scene);
   if (scene.cloth_material) applyMaterialForces(scene);
+  if (scene.material_drag > 0.0) {  // a chain material's damping rate
+    if (scene.drag > 0.0) {
+      throw FieldError{"forces.drag", "not with system.material.damping_rate: the rate gives the drag"};
+    }
+    scene.drag = scene.material_drag;
+  }
 
   if (top.has("output")) {
     FieldReader r = top.object("output");

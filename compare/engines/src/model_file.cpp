@@ -8,6 +8,7 @@
 #include "compare/io/atomic_file.h"
 #include "compare/io/npy.h"
 #include "mysim/circle_system.h"
+#include "mysim/cloth_mesh.h"
 #include "mysim/particle_system.h"
 #include "mysim/wind.h"
 
@@ -81,6 +82,9 @@ std::expected<void, std::string> writeModelFile(const std::string& dir, const my
     hinges["stiffness"].push_back(h.stiffness);
     hinges["rest_angle"].push_back(0.0);
   }
+  // A cloth's triangles (its grid's or its mesh's), for engines that draw or collide surfaces.
+  json triangles = json::array();
+  for (const Eigen::Vector3i& t : mysim::clothTriangles(model)) triangles.push_back({t[0], t[1], t[2]});
   const long steps = mysim::stepCount(config.run);
   json j = {{"format", "springcheck-model"},
             {"version", 1},
@@ -92,6 +96,7 @@ std::expected<void, std::string> writeModelFile(const std::string& dir, const my
             {"particles", particles},
             {"springs", springs},
             {"hinges", hinges},
+            {"triangles", triangles},
             {"gravity", vec3(model.gravity)},
             {"drag", model.drag},
             {"wind", nullptr},

@@ -47,8 +47,8 @@ std::optional<UniformChain> uniformChain(const mysim::Model& model) {
       return std::nullopt;
     }
   }
-  for (int p = 1; p < model.particleCount(); ++p) {
-    if (model.mass[p] != model.mass[1]) return std::nullopt;
+  for (int p = 1; p < model.particleCount(); ++p) {  // a pin's own mass does not matter
+    if (!model.pinned[p] && model.mass[p] != model.mass[1]) return std::nullopt;
   }
   const mysim::Vec3 origin = mysim::at3(model.start_position, 0);
   const mysim::Vec3 next = mysim::at3(model.start_position, 1);

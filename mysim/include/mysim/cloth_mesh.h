@@ -8,8 +8,9 @@
 namespace mysim {
 
 // Triangles of a grid cloth: two per cell, as (a, b, c) particle indices, counter-clockwise seen
-// from the side the normals point to.
-std::vector<Eigen::Vector3i> gridTriangles(const GridShape& grid);
+// from the side the normals point to, each cell cut from (r, c + 1) to (r + 1, c), or with
+// `other_cut` from (r, c) to (r + 1, c + 1) (hinge bending uses both, cloth_material.cpp).
+std::vector<Eigen::Vector3i> gridTriangles(const GridShape& grid, bool other_cut = false);
 
 // Per-vertex normals: the normalised sum of the normalised normals of the faces around each
 // vertex (the seed's smooth shading). Every face counts equally, whatever its area.

@@ -57,6 +57,8 @@ struct Scene {
   bool material_clamped = false;                // pins "left_clamp"
   std::optional<TriangleMesh> cloth_mesh;       // a mesh cloth (with cloth_material)
   double mesh_drag = 0.0;                       // N s/m its damping rate means
+  double chain_end_mass = 0.0;                  // a material chain's end particles (half a link), kg
+  double material_drag = 0.0;                   // N s/m a material chain's damping rate means
   std::vector<ExplicitParticle> particles;  // kind == Particles
   std::vector<Spring> springs;              // kind == Particles
   std::vector<int> pins;                    // chain and cloth: pinned particle indices

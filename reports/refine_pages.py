@@ -53,7 +53,7 @@ def page(scene, rows, estimates, command):
                     notes.append(f"closed form: {engine} at {est['finest_resolution']} cells is "
                                  f"{100 * float(est['finest_vs_reference_rel']):+.3f} % off")
             ax.set_xscale("log", base=2)
-            ax.set_xlabel("cells across (resolution)")
+            ax.set_xlabel("resolution (cells across; a chain's links)")
             ax.set_ylabel(f"[{unit}]" if unit and unit != "1" else "")
             ax.set_title(LABELS[quantity] + "\n" + "; ".join(orders), fontsize=9)
             ax.grid(True, alpha=0.3)

@@ -19,7 +19,9 @@ start=$(date +%s)
 
 # Every engine of the registry, the example external engine (examples/external/) included.
 E=examples/external/engines.json
-$B suite scenes --out "$OUT/suite" --engines-file "$E"
+# Exit 3: some engine blew up on some scene (explicit ones at the material scenes' 2 ms step):
+# a result the report shows, not a failure of the job.
+$B suite scenes --out "$OUT/suite" --engines-file "$E" || [ $? -eq 3 ]
 gate_status=0
 $B gate --json "$OUT/gate.json" || gate_status=$?
 
@@ -60,7 +62,7 @@ $B stability --scene scenes/matched/cloth_hanging.json --name cloth_hanging_larg
 $B refine scenes/material/cantilever_strip.json scenes/material/cantilever_strip_flex.json \
   scenes/material/cusick_drape.json scenes/material/cable_catenary.json --resolutions 4,8,16 \
   --engines mysim,bullet-implicit \
-  --out "$OUT/refine" >/dev/null
+  --out "$OUT/refine" >/dev/null || [ $? -eq 3 ]
 $B report --results "$OUT" --out "$OUT/report"
 echo "main job done in $(( $(date +%s) - start )) s; report: $OUT/report/report.pdf"
 exit "$gate_status"

@@ -1,7 +1,7 @@
 // springcheck refine: one material scene at several resolutions in each engine, and how each
 // quantity converges (compare/studies/refinement.h).
+#include <algorithm>
 #include <cmath>
-#include <iomanip>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -11,6 +11,7 @@
 #include "compare/io/atomic_file.h"
 #include "compare/io/csv.h"
 #include "compare/io/invocation.h"
+#include "compare/io/text_format.h"
 #include "compare/io/whole_folder.h"
 #include "compare/metrics/cantilever_metric.h"
 #include "compare/metrics/closed_form.h"
@@ -84,12 +85,8 @@ std::expected<mysim::Scene, std::string> sceneAt(const EngineRegistry& registry,
   return mysim::parseScene(root->dump(), path, registry.sceneSections());
 }
 
-std::string number(double v) {
-  if (!std::isfinite(v)) return "";
-  std::ostringstream s;
-  s << std::setprecision(10) << v;
-  return s.str();
-}
+// Tables' number format (text_format.h); empty for a quantity the run does not have.
+std::string number(double v) { return std::isfinite(v) ? formatNumber(v) : ""; }
 
 int refine(const RefineOptions& o) {
   const std::optional<EngineRegistry> registry = makeRegistry(o.engines_files);
@@ -97,11 +94,7 @@ int refine(const RefineOptions& o) {
   std::vector<int> resolutions = o.resolutions;
   std::sort(resolutions.begin(), resolutions.end());
   resolutions.erase(std::unique(resolutions.begin(), resolutions.end()), resolutions.end());
-  std::vector<std::string> engines;
-  std::stringstream list(o.engines);
-  for (std::string spec; std::getline(list, spec, ',');) {
-    if (!spec.empty()) engines.push_back(spec);
-  }
+  const std::vector<std::string> engines = splitList(o.engines);
   std::vector<RefineRow> rows;
   int failures = 0;
   for (const std::string& path : o.scenes) {

@@ -36,7 +36,7 @@ std::optional<CantileverReading> readCantilever(const mysim::Model& model,
   }
   r.overhang = (grid.cols - 1.5) * model.material->dx;
   r.chord_angle = std::atan2(r.drop, r.reach);
-  const double steepest = heavyElastica(kMaxElasticaLoad).chord_angle;
+  static const double steepest = heavyElastica(kMaxElasticaLoad).chord_angle;  // solved once
   r.chord_bending_length = r.chord_angle > 0.0 && r.chord_angle < steepest
                                ? bendingLengthFromChord(r.overhang, r.chord_angle)
                                : 0.0;  // no elastica to read it by

@@ -17,9 +17,18 @@ struct CompareOptions {
   bool obj_frames = false;
   std::vector<std::string> engines_files;
   Timing timing;
+  std::string integrator;  // refused: compare names integrators in its engine specs
 };
 
 int compare(const CompareOptions& o) {
+  if (!o.integrator.empty()) {
+    const std::string name = mysim::clip(o.integrator, 40);
+    std::cerr << "error: --integrator: compare runs several engines, so it names mysim's "
+                 "integrator in each engine: write --engines mysim:"
+              << name << " (several: --engines mysim:rk4,mysim:" << name
+              << ",bullet-implicit); `springcheck run` takes --integrator\n";
+    return kBadInput;
+  }
   const std::optional<EngineRegistry> registry = makeRegistry(o.engines_files);
   if (!registry) return kBadInput;
   auto scene = registry->loadScene(o.scene_path);
@@ -73,6 +82,8 @@ void addCompareCommand(CLI::App& app, int& exit_code) {
                 "Also write every sampled frame of each engine as ENGINE/obj/frame_NNNNN.obj "
                 "(with normals), for Blender, MeshLab or ParaView");
   addTimingOptions(cmd, o->timing, 1);
+  // Not an option of compare: taken only to say what to write instead (hidden from --help).
+  cmd->add_option("--integrator", o->integrator)->group("");
   cmd->callback([o, &exit_code] { exit_code = compare(*o); });
 }
 

@@ -1,9 +1,11 @@
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 #include <memory>
 
 #include "commands.h"
+#include "data_dir.h"
 #include "compare/io/scene_files.h"
 #include "compare/metrics/run_metrics.h"
 
@@ -11,7 +13,7 @@ namespace springcheck {
 namespace {
 
 struct ListOptions {
-  std::string dir = "scenes";
+  std::string dir;  // empty: ./scenes where there is one (a checkout), else the shipped scenes
   std::vector<std::string> engines_files;
 };
 
@@ -30,7 +32,10 @@ std::string stabilityText(const mysim::IntegratorInfo& info) {
 int listAll(const ListOptions& o) {
   const std::optional<EngineRegistry> registry = makeRegistry(o.engines_files);
   if (!registry) return kBadInput;
-  const std::string& dir = o.dir;
+  std::error_code error;
+  const std::string dir = !o.dir.empty()                            ? o.dir
+                          : std::filesystem::is_directory("scenes", error) ? std::string("scenes")
+                                                                           : dataFile("scenes");
   std::cout << "Integrators:\n";
   for (const mysim::IntegratorInfo& info : mysim::integratorCatalog()) {
     std::cout << "  " << info.name << (info.alias.empty() ? "" : " (" + info.alias + ")") << "  "
@@ -77,7 +82,9 @@ int listAll(const ListOptions& o) {
 void addListCommand(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<ListOptions>();
   CLI::App* list = app.add_subcommand("list", "List integrators, engines and scenes");
-  list->add_option("dir", o->dir, "Scene directory")->capture_default_str();
+  list->add_option("dir", o->dir,
+                   "Scene directory (default: ./scenes if there is one, else the scenes "
+                   "springcheck ships, " + dataFile("scenes") + ")");
   addEnginesFileOption(list, o->engines_files);
   list->callback([o, &exit_code] { exit_code = listAll(*o); });
 }

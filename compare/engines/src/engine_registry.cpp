@@ -86,7 +86,10 @@ std::vector<std::string> EngineRegistry::expand(const std::vector<std::string>& 
 
 std::string EngineRegistry::schemeOf(const std::string& spec,
                                      const std::string& scene_integrator) const {
-  if (const auto colon = spec.find(':'); colon != std::string::npos) return spec.substr(colon + 1);
+  if (const auto colon = spec.find(':'); colon != std::string::npos) {
+    const std::string integrator = spec.substr(colon + 1);  // "xpbd:substeps=10": the name
+    return integrator.substr(0, integrator.find(':'));
+  }
   const Engine* e = find(spec);
   if (!e) return "";
   return e->takes_integrator ? scene_integrator : e->scheme;
@@ -153,9 +156,11 @@ std::expected<std::pair<const Engine*, RunConfig>, EngineError> EngineRegistry::
       return unknown("engine '" + mysim::clip(spec, 40) + "': " + engine->name +
                      " takes no integrator");
     }
-    auto name = mysim::canonicalIntegratorName(spec.substr(colon + 1));
-    if (!name) return unknown("engine '" + mysim::clip(spec, 40) + "': " + name.error());
-    resolved.integrator.name = *name;
+    // The sweeps' grammar: "mysim:xpbd:substeps=10:iterations=1" sets parameters too.
+    auto variant = mysim::parseIntegratorVariant(spec.substr(colon + 1));
+    if (!variant) return unknown("engine '" + mysim::clip(spec, 40) + "': " + variant.error());
+    resolved.integrator.name = variant->name;
+    for (const auto& [key, value] : variant->values) resolved.integrator.values[key] = value;
   }
   return std::pair{engine, std::move(resolved)};
 }

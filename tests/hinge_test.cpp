@@ -7,6 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <fstream>
 #include <numbers>
 
@@ -14,6 +17,7 @@
 #include "mysim/cloth_mesh.h"
 #include "mysim/energy.h"
 #include "mysim/integrator.h"
+#include "mysim/mesh_cloth.h"
 #include "mysim/particle_system.h"
 #include "mysim/scene.h"
 #include "mysim/scene_file.h"
@@ -277,6 +281,54 @@ TEST(MaterialCloth, AnObjMeshBecomesAClothAndABadOneIsRefusedNamingTheFile) {
   auto folded = scene("folded.obj");
   ASSERT_FALSE(folded);
   EXPECT_NE(folded.error().find("not flat"), std::string::npos) << folded.error();
+}
+
+// What an OBJ file can hold that a cloth cannot, each refused naming the file, its line and the
+// file's own 1-based vertex numbers; what a cloth ignores, said with its lines; a UTF-8
+// byte-order mark read past (it used to hide the first vertex and shift every index by one).
+TEST(ObjMesh, EveryBadMeshIsRefusedNamingFileLineAndTheFilesVertexNumbers) {
+  const std::string dir = ::testing::TempDir();
+  auto write = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir + name) << text;
+    return dir + name;
+  };
+  const std::string quad = "v 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\n";
+  auto bom = readObjMesh(write("bom.obj", "\xEF\xBB\xBF" + quad + "f 1 2 3 4\n"));
+  ASSERT_TRUE(bom) << bom.error();
+  EXPECT_EQ(bom->vertices.size(), 4u);
+  EXPECT_EQ(bom->vertices[0], Vec3::Zero());
+  auto odd = readObjMesh(write("odd.obj", quad + "vt 0 0\nfoo 1\nf 1 2 3 4\nbar\nfoo 2\n"));
+  ASSERT_TRUE(odd) << odd.error();
+  ASSERT_EQ(odd->warnings.size(), 2u);  // bar, then foo (vt is a known statement)
+  EXPECT_NE(odd->warnings[1].find("odd.obj: lines 6, 9: unknown OBJ statement 'foo'"),
+            std::string::npos) << odd->warnings[1];
+  auto folder = readObjMesh(dir);
+  ASSERT_FALSE(folder);
+  EXPECT_NE(folder.error().find("is a directory"), std::string::npos) << folder.error();
+  const std::string fifo = dir + "fifo.obj";
+  ::unlink(fifo.c_str());
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  auto pipe = readObjMesh(fifo);  // would block for ever if opened
+  ASSERT_FALSE(pipe);
+  EXPECT_NE(pipe.error().find("not a regular file"), std::string::npos) << pipe.error();
+
+  const ClothMaterial material{.density = 0.2, .stretch_stiffness = 1000.0};
+  auto refused = [&](const std::string& name, const std::string& text) {
+    auto mesh = readObjMesh(write(name, text));
+    EXPECT_TRUE(mesh) << mesh.error();
+    Model model;
+    auto built = buildMeshCloth(*mesh, material, Vec3::Zero(), model);
+    EXPECT_FALSE(built);
+    return built ? std::string() : built.error();
+  };
+  const std::string flat = refused("flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
+  EXPECT_NE(flat.find("flat.obj:4: triangle (1, 2, 3) has no area"), std::string::npos) << flat;
+  const std::string fin = refused("fin.obj", quad + "v 1 1 0\nf 1 2 3\nf 1 2 4\nf 2 1 5\n");
+  EXPECT_NE(fin.find("fin.obj:8: edge 1-2 is shared by 3 triangles (lines 6, 7, 8"),
+            std::string::npos) << fin;
+  const std::string huge = refused("huge.obj", "v 0 0 0\nv 1e308 0 0\nv 0 0 1e308\nf 1 2 3\n");
+  EXPECT_NE(huge.find("huge.obj:4: triangle (1, 2, 3): its area overflows"), std::string::npos)
+      << huge;
 }
 
 }  // namespace

@@ -7,6 +7,52 @@
 
 namespace mysim {
 
+namespace {
+
+// Each edge's adjacent area, and into `mass` each vertex's third of its triangles' mass; refuses
+// a triangle without area (or whose area overflows) and an edge of more than two triangles.
+std::expected<std::map<std::pair<int, int>, double>, std::string> lumpTriangles(
+    const TriangleMesh& mesh, double density, Vector& mass) {
+  std::map<std::pair<int, int>, double> edge_area;
+  std::map<std::pair<int, int>, std::vector<int>> edge_triangles;
+  for (int k = 0; k < static_cast<int>(mesh.triangles.size()); ++k) {
+    const Eigen::Vector3i& t = mesh.triangles[k];
+    const Vec3 a = mesh.vertices[t[0]], b = mesh.vertices[t[1]], c = mesh.vertices[t[2]];
+    const double area = 0.5 * (b - a).cross(c - a).norm();
+    const std::string corners = "(" + mesh.vertexName(t[0]) + ", " + mesh.vertexName(t[1]) +
+                                ", " + mesh.vertexName(t[2]) + ")";
+    if (std::isinf(area) || (std::isnan(area) && (b - a).allFinite() && (c - a).allFinite())) {
+      return std::unexpected(mesh.where(k) + "triangle " + corners +
+                             ": its area overflows a double (coordinates too large: use metres)");
+    }
+    if (!(area > 0.0)) {
+      return std::unexpected(mesh.where(k) + "triangle " + corners + " has no area");
+    }
+    for (int e = 0; e < 3; ++e) {
+      mass[t[e]] += density * area / 3.0;
+      const int i = t[e], j = t[(e + 1) % 3];
+      edge_area[{std::min(i, j), std::max(i, j)}] += area;
+      edge_triangles[{std::min(i, j), std::max(i, j)}].push_back(k);
+    }
+  }
+  for (const auto& [edge, triangles] : edge_triangles) {
+    if (triangles.size() <= 2) continue;
+    std::string faces;  // the faces' lines in the file, or the triangles' indices
+    for (int t : triangles) {
+      faces += (faces.empty() ? "" : ", ") +
+               std::to_string(mesh.source.empty() ? t : mesh.lines[t]);
+    }
+    return std::unexpected(mesh.where(triangles[2]) + "edge " + mesh.vertexName(edge.first) + "-" +
+                           mesh.vertexName(edge.second) + " is shared by " +
+                           std::to_string(triangles.size()) + " triangles (" +
+                           (mesh.source.empty() ? "triangles " : "lines ") + faces +
+                           "; non-manifold): a cloth's edge joins at most two");
+  }
+  return edge_area;
+}
+
+}  // namespace
+
 std::expected<double, std::string> buildMeshCloth(const TriangleMesh& mesh,
                                                   const ClothMaterial& material, const Vec3& origin,
                                                   Model& model) {
@@ -16,24 +62,13 @@ std::expected<double, std::string> buildMeshCloth(const TriangleMesh& mesh,
   model.start_position.resize(3 * n);
   model.start_velocity = Vector::Zero(3 * n);
   for (int p = 0; p < n; ++p) at3(model.start_position, p) = origin + mesh.vertices[p];
-  // Each edge's adjacent area, and each vertex's third of its triangles.
-  std::map<std::pair<int, int>, double> edge_area;
-  for (const Eigen::Vector3i& t : mesh.triangles) {
-    const Vec3 a = mesh.vertices[t[0]], b = mesh.vertices[t[1]], c = mesh.vertices[t[2]];
-    const double area = 0.5 * (b - a).cross(c - a).norm();
-    if (!(area > 0.0)) {
-      return std::unexpected("triangle (" + std::to_string(t[0]) + ", " + std::to_string(t[1]) +
-                             ", " + std::to_string(t[2]) + ") has no area");
-    }
-    for (int k = 0; k < 3; ++k) {
-      model.mass[t[k]] += material.density * area / 3.0;
-      const int i = t[k], j = t[(k + 1) % 3];
-      edge_area[{std::min(i, j), std::max(i, j)}] += area;
-    }
-  }
+  auto lumped = lumpTriangles(mesh, material.density, model.mass);
+  if (!lumped) return std::unexpected(lumped.error());
+  const std::map<std::pair<int, int>, double>& edge_area = *lumped;
   for (int p = 0; p < n; ++p) {
     if (!(model.mass[p] > 0.0)) {
-      return std::unexpected("vertex " + std::to_string(p) + " is in no triangle");
+      return std::unexpected(mesh.source + (mesh.source.empty() ? "" : ": ") + "vertex " +
+                             mesh.vertexName(p) + " is in no triangle");
     }
   }
   std::vector<Spring> springs;
@@ -53,8 +88,9 @@ std::expected<double, std::string> buildMeshCloth(const TriangleMesh& mesh,
       const double edge = (at3(model.start_position, h.particle[1]) -
                            at3(model.start_position, h.particle[0])).norm();
       if (rest.norm() > 1e-9 * edge * std::abs(h.weight[2])) {
-        return std::unexpected("the mesh is not flat at edge " + std::to_string(h.particle[0]) +
-                               "-" + std::to_string(h.particle[1]) +
+        return std::unexpected(mesh.source + (mesh.source.empty() ? "" : ": ") +
+                               "the mesh is not flat at edge " + mesh.vertexName(h.particle[0]) +
+                               "-" + mesh.vertexName(h.particle[1]) +
                                ": hinge bending bends about a flat rest state (rest angle 0)");
       }
     }

@@ -1,7 +1,10 @@
 #include "mysim/triangle_mesh.h"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <map>
+#include <set>
 #include <numbers>
 #include <sstream>
 
@@ -43,17 +46,56 @@ TriangleMesh discMesh(double radius, int rings) {
   return mesh;
 }
 
+std::string TriangleMesh::where(int t) const {
+  if (source.empty() || t < 0 || t >= static_cast<int>(lines.size())) return "";
+  return source + ":" + std::to_string(lines[t]) + ": ";
+}
+
+std::string TriangleMesh::vertexName(int v) const {
+  return std::to_string(source.empty() ? v : v + 1);
+}
+
+namespace {
+
+// OBJ statements that carry nothing a cloth uses: skipped without a word.
+bool ignoredObjStatement(const std::string& tag) {
+  static const std::set<std::string> ignored{"vt", "vn", "vp", "o", "g", "s", "mtllib", "usemtl"};
+  return tag[0] == '#' || ignored.contains(tag);
+}
+
+std::string lineList(const std::vector<int>& lines) {
+  std::string text;
+  for (std::size_t k = 0; k < lines.size() && k < 10; ++k) {
+    text += (k ? ", " : "") + std::to_string(lines[k]);
+  }
+  if (lines.size() > 10) text += " and " + std::to_string(lines.size() - 10) + " more";
+  return text;
+}
+
+}  // namespace
+
 std::expected<TriangleMesh, std::string> readObjMesh(const std::string& path) {
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (std::filesystem::is_directory(status)) {
+    return std::unexpected(path + ": is a directory, expected an OBJ mesh file");
+  }
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+    return std::unexpected(path + ": not a regular file (a FIFO or device), expected an OBJ mesh file");
+  }
   std::ifstream in(path);
   if (!in) return std::unexpected(path + ": cannot read (the mesh file)");
   TriangleMesh mesh;
+  mesh.source = path;
   std::string line;
   int number = 0;
+  std::map<std::string, std::vector<int>> unknown;  // statement -> its lines
   auto fail = [&](const std::string& what) {
     return std::unexpected(path + ":" + std::to_string(number) + ": " + what);
   };
   while (std::getline(in, line)) {
     ++number;
+    if (number == 1 && line.starts_with("\xEF\xBB\xBF")) line.erase(0, 3);  // UTF-8 BOM
     std::istringstream words(line);
     std::string tag;
     if (!(words >> tag)) continue;
@@ -83,10 +125,17 @@ std::expected<TriangleMesh, std::string> readObjMesh(const std::string& path) {
       if (face.size() < 3) return fail("expected a face of three or more vertices");
       for (std::size_t k = 1; k + 1 < face.size(); ++k) {
         mesh.triangles.emplace_back(face[0], face[k], face[k + 1]);
+        mesh.lines.push_back(number);
       }
+    } else if (!ignoredObjStatement(tag)) {
+      unknown[clip(tag, 20)].push_back(number);
     }
   }
   if (mesh.triangles.empty()) return std::unexpected(path + ": no faces (f lines): not a mesh");
+  for (const auto& [tag, lines] : unknown) {
+    mesh.warnings.push_back(path + ": line" + (lines.size() > 1 ? "s " : " ") + lineList(lines) +
+                            ": unknown OBJ statement '" + tag + "' skipped");
+  }
   return mesh;
 }
 

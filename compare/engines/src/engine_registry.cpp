@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <iostream>
 
 #include "compare/engines/external_engine.h"
 #include "mysim/run_limits.h"
@@ -126,7 +127,12 @@ std::expected<std::string, std::string> EngineRegistry::shippedScene(const std::
 }
 
 std::expected<mysim::Scene, std::string> EngineRegistry::loadScene(const std::string& path) const {
-  return mysim::loadScene(path, sections_);
+  auto scene = mysim::loadScene(path, sections_);
+  // What a mesh reader skipped is said, not dropped silently (the run goes on without it).
+  if (scene && scene->cloth_mesh) {
+    for (const std::string& w : scene->cloth_mesh->warnings) std::cerr << "warning: " << w << '\n';
+  }
+  return scene;
 }
 
 std::string engineList(const EngineRegistry& registry) {

@@ -182,6 +182,33 @@ INSTANTIATE_TEST_SUITE_P(
       return name;
     });
 
+// The model file's integrator holds the integrator's name and the parameters it declares, and
+// nothing else: an outside engine reading "substeps" on an RK4 scene would be misled.
+TEST(ModelFile, NamesOnlyTheParametersOfTheIntegratorInUse) {
+  const EngineRegistry registry;
+  mysim::Scene chain = scene(registry, "matched/chain_hanging.json");
+  const mysim::Model model = mysim::buildModel(chain);
+  auto keys = [&](const std::string& integrator) {
+    chain.integrator.name = integrator;
+    const RunConfig config = runConfig(chain);
+    const fs::path dir = fs::temp_directory_path() /
+                         ("springcheck_model_keys_" + std::to_string(getpid()));
+    EXPECT_TRUE(writeModelFile(dir.string(), model, config, framePlan(config.run, false)));
+    const nlohmann::json j = nlohmann::json::parse(std::ifstream(dir / "model.json"));
+    fs::remove_all(dir);
+    std::vector<std::string> names;
+    for (const auto& [key, value] : j["integrator"].items()) names.push_back(key);
+    return names;
+  };
+  using V = std::vector<std::string>;
+  EXPECT_EQ(keys("rk4"), V({"name"}));
+  EXPECT_EQ(keys("xpbd"), V({"iterations", "name", "substeps"}));
+  EXPECT_EQ(keys("dopri5"), V({"abs_tolerance", "name", "rel_tolerance"}));
+  EXPECT_EQ(keys("backward-euler"),
+            V({"cg_max_iterations", "cg_preconditioner", "cg_tolerance", "name"}));
+  EXPECT_EQ(keys("vbd"), V({"acceleration_rho", "iterations", "name"}));
+}
+
 TEST(ModelFile, HoldsEveryParticleSpringFrameTimeAndTheWindTable) {
   const EngineRegistry registry;
   const mysim::Scene windy = scene(registry, "matched/cloth_in_wind.json");

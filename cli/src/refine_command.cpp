@@ -88,12 +88,28 @@ std::expected<mysim::Scene, std::string> sceneAt(const EngineRegistry& registry,
 // Tables' number format (text_format.h); empty for a quantity the run does not have.
 std::string number(double v) { return std::isfinite(v) ? formatNumber(v) : ""; }
 
+// Sorts the resolutions; refuses one given twice, and says that fewer than three give no order.
+bool sortedDistinct(std::vector<int>& resolutions) {
+  std::sort(resolutions.begin(), resolutions.end());
+  if (auto twice = std::adjacent_find(resolutions.begin(), resolutions.end());
+      twice != resolutions.end()) {
+    std::cerr << "error: --resolutions: " << *twice
+              << " given twice; expected distinct resolutions (three or more for an order)\n";
+    return false;
+  }
+  if (resolutions.size() < 3) {
+    std::cerr << "note: --resolutions: " << resolutions.size()
+              << " resolution(s): the quantities are measured, but an order and a limit need "
+                 "three or more\n";
+  }
+  return true;
+}
+
 int refine(const RefineOptions& o) {
   const std::optional<EngineRegistry> registry = makeRegistry(o.engines_files);
   if (!registry) return kBadInput;
   std::vector<int> resolutions = o.resolutions;
-  std::sort(resolutions.begin(), resolutions.end());
-  resolutions.erase(std::unique(resolutions.begin(), resolutions.end()), resolutions.end());
+  if (!sortedDistinct(resolutions)) return kBadInput;
   const std::vector<std::string> engines = splitList(o.engines);
   std::vector<RefineRow> rows;
   int failures = 0;

@@ -18,6 +18,30 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
+// The integrator's name and the parameters it declares (the catalogue's), as the run has them:
+// only those, so an engine is not told of substeps an integrator does not have.
+json integratorSettings(const mysim::IntegratorSettings& settings) {
+  json j{{"name", settings.name}};
+  const mysim::IntegratorInfo* info = mysim::findIntegrator(settings.name);
+  if (!info) return j;
+  for (const mysim::IntegratorParameter& p : info->parameters) {
+    if (p.in_values) {
+      j[p.name] = settings.value(p.name);
+    } else if (p.name == "abs_tolerance") {
+      j[p.name] = settings.abs_tolerance;
+    } else if (p.name == "rel_tolerance") {
+      j[p.name] = settings.rel_tolerance;
+    } else if (p.name == "cg_tolerance") {
+      j[p.name] = settings.cg_tolerance;
+    } else if (p.name == "cg_max_iterations") {
+      j[p.name] = settings.cg_max_iterations;
+    } else if (p.name == "cg_preconditioner") {
+      j[p.name] = mysim::preconditionerName(settings.preconditioner);
+    }
+  }
+  return j;
+}
+
 json vec3(const mysim::Vec3& v) { return json::array({v.x(), v.y(), v.z()}); }
 
 json rows3(const mysim::Vector& flat) {
@@ -103,13 +127,7 @@ std::expected<void, std::string> writeModelFile(const std::string& dir, const my
             {"pin_motion", nullptr},
             {"colliders", json::array()},
             {"sphere", nullptr},
-            {"integrator",
-             {{"name", config.integrator.name},
-              {"abs_tolerance", config.integrator.abs_tolerance},
-              {"rel_tolerance", config.integrator.rel_tolerance},
-              {"cg_tolerance", config.integrator.cg_tolerance},
-              {"cg_max_iterations", config.integrator.cg_max_iterations},
-              {"cg_preconditioner", mysim::preconditionerName(config.integrator.preconditioner)}}},
+            {"integrator", integratorSettings(config.integrator)},
             {"dt", config.run.dt},
             {"duration", config.run.duration},
             {"steps", steps},
@@ -121,12 +139,6 @@ std::expected<void, std::string> writeModelFile(const std::string& dir, const my
                        {"frequency", model.pin_motion->frequency}};
   }
   for (const mysim::Collider& c : model.colliders) j["colliders"].push_back(describeCollider(c));
-  // Every integrator parameter of the catalogue, as the run has it (substeps, iterations, ...).
-  for (const mysim::IntegratorInfo& info : mysim::integratorCatalog()) {
-    for (const mysim::IntegratorParameter& p : info.parameters) {
-      if (p.in_values) j["integrator"][p.name] = config.integrator.value(p.name);
-    }
-  }
   // Engines written for a model with at most one sphere read "sphere": kept for them, filled
   // only when the sphere is the one collider (so such an engine never silently drops another).
   if (model.colliders.size() == 1 && std::holds_alternative<mysim::Sphere>(model.colliders[0])) {

@@ -47,5 +47,34 @@ TEST(HeavyElastica, TheTipStaysOnTheStripsLengthAndFallsFurtherUnderMoreLoad) {
   }
 }
 
+// Any load, not only the bracket's (up to 30): the hanging branch followed by continuation. Drop
+// and chord keep growing with the load past 30 (a strip at load 30.15 has a reference too), and a
+// very heavy strip hangs straight down from a bend at the clamp whose closed form is the elastica
+// under its whole weight as tension: theta'' = -load cos(theta) there, so theta'(0) -> sqrt(2 load)
+// and the reach -> sqrt(2 / load) (first integral theta'^2 / 2 = load (1 - sin theta)); the
+// corrections are O(load^(-1/2)), 1 % at load 1e4.
+TEST(HeavyElastica, AnyLoadHasAReferenceAndAVeryHeavyStripHangsFromItsClampBend) {
+  double last_drop = heavyElastica(kMaxElasticaLoad).drop;
+  double last_chord = heavyElastica(kMaxElasticaLoad).chord_angle;
+  for (double load : {30.15, 40.0, 100.0, 1e3, 1e4}) {
+    const ElasticaTip tip = heavyElastica(load);
+    EXPECT_GT(tip.drop, last_drop) << load;
+    EXPECT_GT(tip.chord_angle, last_chord) << load;
+    EXPECT_LT(tip.chord_angle, std::numbers::pi / 2) << load;
+    EXPECT_LT(std::hypot(tip.drop, tip.reach), 1.0) << load;
+    last_drop = tip.drop;
+    last_chord = tip.chord_angle;
+  }
+  const ElasticaTip heavy = heavyElastica(1e4);
+  EXPECT_NEAR(heavy.clamp_curvature / std::sqrt(2e4), 1.0, 0.02);
+  EXPECT_NEAR(heavy.reach / std::sqrt(2.0 / 1e4), 1.0, 0.05);
+  // The reading inverts it there too: the chord of load 200 reads 200^(-1/3) back.
+  EXPECT_NEAR(bendingLengthFromChord(1.0, heavyElastica(200.0).chord_angle), std::cbrt(1.0 / 200.0),
+              1e-7);
+  // Continuous across the bracket's limit: 30 and 30 (1 + 1e-9) agree to 1e-8.
+  EXPECT_NEAR(heavyElastica(kMaxElasticaLoad * (1 + 1e-9)).drop,
+              heavyElastica(kMaxElasticaLoad).drop, 1e-8);
+}
+
 }  // namespace
 }  // namespace springcheck

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "compare/engines/external_engine.h"
+#include "mysim/model_scales.h"
 #include "mysim/run_limits.h"
 #include "mysim/scene_file.h"
 #include "reference/bullet_engine.h"
@@ -177,6 +178,7 @@ namespace {
 std::optional<EngineError> limitError(const mysim::Model& model, const RunConfig& config) {
   const double particles = model.isCircle() ? 1 : model.particleCount();
   auto error = mysim::checkRunLimits(particles, model.springs.size(), config.run);
+  if (!error) error = mysim::checkModelScales(model, config.run.dt);
   if (!error) return std::nullopt;
   return EngineError{EngineError::Kind::Invalid,
                      config.source + ": " + error->field + ": " + error->message};

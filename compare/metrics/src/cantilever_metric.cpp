@@ -36,7 +36,7 @@ std::optional<CantileverReading> readCantilever(const mysim::Model& model,
   }
   r.overhang = (grid.cols - 1.5) * model.material->dx;
   r.chord_angle = std::atan2(r.drop, r.reach);
-  static const double steepest = heavyElastica(kMaxElasticaLoad).chord_angle;  // solved once
+  static const double steepest = heavyElastica(kLargestReadableLoad).chord_angle;  // solved once
   r.chord_bending_length = r.chord_angle > 0.0 && r.chord_angle < steepest
                                ? bendingLengthFromChord(r.overhang, r.chord_angle)
                                : 0.0;  // no elastica to read it by
@@ -50,7 +50,7 @@ std::optional<CantileverReference> cantileverReference(const mysim::Model& model
   c.overhang = (model.grid->cols - 1.5) * model.material->dx;
   const double w = m.density * model.gravity.norm();
   c.load = w * std::pow(c.overhang, 3) / m.bending_rigidity;
-  if (c.load > kMaxElasticaLoad) return std::nullopt;
+  if (c.load > kLargestElasticaLoad) return std::nullopt;
   c.bending_length = std::cbrt(m.bending_rigidity / w);
   c.elastica = heavyElastica(c.load);
   c.chord_bending_length = bendingLengthFromChord(c.overhang, c.elastica.chord_angle);

@@ -6,14 +6,24 @@
 // (Love, "A treatise on the mathematical theory of elasticity", sec. 263; Peirce 1930, "The
 // handle of cloth as a measurable quantity", for cloth). In s / L it depends on one number, the
 // load lambda = w L^3 / B. Solved by shooting on theta'(0): fourth-order Runge-Kutta over 5,000
-// steps and the secant method on theta'(L) = 0, to 1e-12 of L in the tip (tested against the
+// steps and regula falsi on theta'(L) = 0, to 1e-12 of L in the tip (heavier than load 30: from the
+// tip, below) (tested against the
 // small-load limit w L^4 / (8 B) and against the standard's 41.5 degrees at lambda = 8.004).
 namespace springcheck {
 
-// Loads up to this (chords up to 68 degrees) have one solution in the shooting bracket; above it
-// the strip can curl back and the bracket holds spurious roots (load 50 found a 0.016 L drop).
-// The cantilever reference and reading stop here.
+// Up to this load (chords up to 68 degrees) the elastica is shot from the clamp on a bracket
+// that holds one solution; above it the bracket holds curled-back roots too (load 50 found a
+// 0.016 L drop), so heavier strips are shot from the free end in the tail's tilt, which stays
+// well-conditioned at any load (heavy_elastica.cpp; tested against the large-load limit
+// theta'(0) -> sqrt(2 load), reach -> sqrt(2 / load)).
 constexpr double kMaxElasticaLoad = 30.0;
+// The cantilever reference is solved up to this load (w L^3 / B = 1e6: the strip hangs straight
+// down within 0.2 % of L below a bend a thousandth of L long; its integration then takes 1e6
+// steps, about a second); heavier strips have no reference, and the reading says so.
+constexpr double kLargestElasticaLoad = 1e6;
+// A chord is read as a bending length up to the chord of this load (89.2 degrees): steeper
+// chords tell loads apart by less than the reading's own error.
+constexpr double kLargestReadableLoad = 1e4;
 
 struct ElasticaTip {
   double drop = 0.0;          // below the clamp, in units of L

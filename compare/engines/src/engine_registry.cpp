@@ -7,6 +7,7 @@
 #include "compare/engines/external_engine.h"
 #include "mysim/model_scales.h"
 #include "mysim/run_limits.h"
+#include "mysim/start_state.h"
 #include "mysim/scene_file.h"
 #include "reference/bullet_engine.h"
 
@@ -179,6 +180,7 @@ std::optional<EngineError> limitError(const mysim::Model& model, const RunConfig
   const double particles = model.isCircle() ? 1 : model.particleCount();
   auto error = mysim::checkRunLimits(particles, model.springs.size(), config.run);
   if (!error) error = mysim::checkModelScales(model, config.run.dt);
+  if (!error) error = mysim::checkStartOutsideColliders(model);
   if (!error) return std::nullopt;
   return EngineError{EngineError::Kind::Invalid,
                      config.source + ": " + error->field + ": " + error->message};

@@ -43,7 +43,8 @@ json check(const std::string& scene, std::vector<std::string> engines, const std
 json tolerancesFile(const std::string& name) {
   return {{"$comment",
            "Gates for " + name + ": springcheck gate --tolerances tolerances.json, or springcheck "
-           "suite --engines-file engines.json --tolerances tolerances.json. Scenes named without a "
+           "suite SHIPPED/scenes/matched --engines-file engines.json --tolerances tolerances.json "
+           "(README.md names the folder). Scenes named without a "
            "folder are the matched scenes springcheck ships. Change a bound only with its reason."},
           {"engines_file", "engines.json"},
           {"checks",
@@ -51,9 +52,9 @@ json tolerancesFile(const std::string& name) {
                   "the vertical chain's closed-form sag; after 20 s of drag at 1 /s the slowest "
                   "mode keeps e^-10 of the 0.35 m start displacement (1.6e-5 m)"),
             check("cloth_hanging", {name, "mysim:symplectic-euler"}, "drape_max", 1e-9,
-                  "as written, the same algorithm as mysim's symplectic Euler summed in another "
-                  "order: round-off (1.5e-15 m). Once you change the method, hold it to "
-                  "bullet-deformable or a converged reference instead"),
+                  "as written, mysim's symplectic Euler operation by operation: 0 m (the bound "
+                  "leaves room for another numpy's round-off). Once you change the method, hold "
+                  "it to bullet-deformable or a converged reference instead"),
             check("cloth_hanging", {name, "bullet-deformable"}, "drape_max", 1e-5,
                   "Bullet's explicit mode settles to the one rest shape of the same forces "
                   "(3.7e-7 m apart)"),
@@ -68,8 +69,8 @@ std::string readme(const std::string& dir, const std::string& name) {
     << "Made by `springcheck engine init`. It runs and passes its gate as it is:\n\n"
     << "```sh\n"
     << "springcheck gate --tolerances " << dir << "/tolerances.json\n"
-    << "springcheck suite --engines-file " << dir << "/engines.json --tolerances " << dir
-    << "/tolerances.json   # every matched scene\n"
+    << "springcheck suite " << dataFile("scenes/matched") << " --engines-file " << dir
+    << "/engines.json --tolerances " << dir << "/tolerances.json   # every matched scene\n"
     << "```\n\n"
     << "- `" << name << ".py`: the simulator, symplectic Euler with numpy. Replace its stepping "
     << "with yours; keep reading the model file and writing `times.npy`, `trajectory.npy` and "
@@ -131,7 +132,9 @@ int init(const std::string& dir, const std::string& name) {
                   fs::perm_options::add, ec);
   std::cout << "engine '" << name << "' written to " << dir << ": " << name
             << ".py, engines.json, tolerances.json, README.md\n"
-            << "next: springcheck gate --tolerances " << dir << "/tolerances.json\n";
+            << "next: springcheck gate --tolerances " << dir << "/tolerances.json\n"
+            << "      springcheck suite " << dataFile("scenes/matched") << " --engines-file " << dir
+            << "/engines.json --tolerances " << dir << "/tolerances.json\n";
   return kOk;
 }
 

@@ -335,6 +335,22 @@ TEST(MisbehavingEngine, ADeclaredBlowUpIsAcceptedAsABlowUpAtItsTime) {
   EXPECT_NEAR(run->blowup->time, run->times.back() + 0.003, 1e-12);
 }
 
+// A declared blow-up whose last frame went non-finite (the engine returned the frame where it
+// saw it): accepted as a blow-up at the declared time, that frame dropped, and the record says
+// non-finite (it was refused as if nothing had been declared).
+TEST(MisbehavingEngine, ADeclaredBlowUpEndingOnANonFiniteFrameSaysNonFinite) {
+  const EngineRegistry registry = registryWith("tests/data/misbehaving_engines.json");
+  mysim::Scene chain = scene(registry, "matched/chain_hanging.json");
+  chain.duration = 0.2;
+  auto run = registry.run("blowup-nonfinite-last", chain);
+  ASSERT_TRUE(run) << run.error().message;
+  ASSERT_TRUE(run->blowup);
+  EXPECT_EQ(run->blowup->check, "engine");
+  EXPECT_NE(run->blowup->detail.find("position overflowed"), std::string::npos);
+  EXPECT_NE(run->blowup->detail.find("non-finite"), std::string::npos) << run->blowup->detail;
+  for (const auto& f : run->frames) EXPECT_TRUE(f.allFinite());
+}
+
 // A summary.json without the optional counts: evaluations unknown (-1, written as null), not 0,
 // and the note says the summary lacks the wall time (not that there is no summary).
 TEST(MisbehavingEngine, ASummaryWithoutCountsLeavesThemUnknown) {

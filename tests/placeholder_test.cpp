@@ -46,5 +46,19 @@ TEST(Placeholders, TheEnginesFileAcceptsEnvAndBracesAndRefusesAnUnknownOne) {
   EXPECT_NE(refused.error().find("engines.json"), std::string::npos) << refused.error();
 }
 
+// A placeholder inside another ({env:{dir}}) cannot mean anything in a one-pass substitution: it
+// is refused when the engines file is read (exit 2, naming the entry), not at run time (it was
+// read as the variable "{dir" and failed every run with exit 4); so is an impossible variable name.
+TEST(Placeholders, ANestedPlaceholderIsRefusedWhenTheEnginesFileIsRead) {
+  for (const char* command : {"{env:{dir}}/sim", "{dir{out}}", "{env:9LIVES}", "{env:A-B}"}) {
+    const std::string text = std::string(R"({"engines": [{"name": "e", "command": [")") + command +
+                             R"("]}]})";
+    auto refused = parseEnginesFile(text, "engines.json");
+    ASSERT_FALSE(refused) << command;
+    EXPECT_NE(refused.error().find("engines.json: engines[0].command[0]"), std::string::npos)
+        << refused.error();
+  }
+}
+
 }  // namespace
 }  // namespace springcheck

@@ -4,6 +4,9 @@
 #include "compare/studies/sweep.h"
 
 #include <gtest/gtest.h>
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -99,6 +102,23 @@ TEST_F(SmallSweep, ResumeRefusesATableOfAnotherSpec) {
   ASSERT_FALSE(ran) << "resumed a table of another spec";
   EXPECT_NE(ran.error().find("case 0 has dt"), std::string::npos) << ran.error();
   EXPECT_NE(ran.error().find("--fresh"), std::string::npos) << ran.error();
+}
+
+// Two sweeps into one table at once: the second is refused while the first holds the table's
+// lock (it used to read the first's journal as its own rows), and runs once the lock is free.
+TEST_F(SmallSweep, ASecondSweepIntoATableBeingWrittenIsRefused) {
+  const std::string table = (dir_ / "table.csv").string();
+  const int other = ::open((table + ".lock").c_str(), O_CREAT | O_RDWR, 0644);  // "the first"
+  ASSERT_GE(other, 0);
+  ASSERT_EQ(::flock(other, LOCK_EX | LOCK_NB), 0);
+  auto refused = runSweep(registry_, spec_, table, {.jobs = 1});
+  ASSERT_FALSE(refused) << "ran beside another sweep of the same table";
+  EXPECT_NE(refused.error().find("another sweep is writing this table"), std::string::npos)
+      << refused.error();
+  EXPECT_FALSE(fs::exists(table));
+  EXPECT_FALSE(fs::exists(table + ".partial"));
+  ::close(other);  // the first is done
+  run("table.csv", {.jobs = 1}, 6);
 }
 
 TEST_F(SmallSweep, ShardsMergeToTheWhole) {

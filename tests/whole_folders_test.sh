@@ -61,3 +61,20 @@ echo half > "$work/.full.staging.$dead.1/trajectory.npy"
 [ ! -e "$work/.full.staging.$dead.1" ] || fail "a dead run's staging folder was left"
 [ -d "$work/.full.staging.$$.1" ] || fail "a live process's staging folder was removed"
 echo "ok: a dead run's staging folder is cleared by the next write"
+
+# --out given as a link to a folder: followed (the results land in the folder it names, the link
+# stays a link); a link to nothing is refused with a message, nothing written.
+mkdir -p "$work/real_results" && ln -s "$work/real_results" "$work/linked"
+"$exe" run "$scene" --duration 0.2 --out "$work/linked" > "$work/link_log" 2>&1 \
+  || fail "--out as a link to a folder: $(cat "$work/link_log")"
+[ -L "$work/linked" ] || fail "the link was replaced"
+[ -s "$work/real_results/summary.json" ] || fail "the results are not in the linked folder"
+"$exe" run "$scene" --duration 0.2 --out "$work/linked" > "$work/link_log" 2>&1 \
+  || fail "a second run through the link: $(cat "$work/link_log")"
+ln -s "$work/nowhere" "$work/dangling"
+if "$exe" run "$scene" --duration 0.2 --out "$work/dangling" > "$work/link_log" 2>&1; then
+  fail "a link to nothing was written through"
+fi
+grep -q "a symbolic link to" "$work/link_log" || fail "no word on the link: $(cat "$work/link_log")"
+[ ! -e "$work/nowhere" ] || fail "the dangling link's target was created"
+echo "ok: --out as a link to a folder is followed; a link to nothing is refused"

@@ -41,6 +41,10 @@ if mode == "wrong-times":
 if mode == "blowup":  # stops half way, declaring a time between two frames
     times, frames = times[: len(times) // 2], frames[: len(times) // 2]
     summary["blowup"] = {"time": float(times[-1]) + 0.003, "reason": "the test engine gave up"}
+if mode == "blowup-nonfinite-last":  # stops half way on the frame that went non-finite
+    times, frames = times[: len(times) // 2], frames[: len(times) // 2]
+    frames[-1, 0, 0] = np.inf
+    summary["blowup"] = {"time": float(times[-1]), "reason": "position overflowed"}
 if mode == "negative-evaluations":
     summary["derivative_evaluations"] = -5
 if mode == "huge-evaluations":

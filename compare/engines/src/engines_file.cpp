@@ -30,6 +30,13 @@ bool isEngineName(const std::string& name) {
   });
 }
 
+// An environment variable's name as a shell writes it: [A-Za-z_][A-Za-z0-9_]*.
+bool isEnvironmentName(const std::string& name) {
+  if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0]))) return false;
+  return std::all_of(name.begin(), name.end(),
+                     [](unsigned char c) { return std::isalnum(c) || c == '_'; });
+}
+
 ExternalEngineSpec readEntry(mysim::FieldReader& r) {
   using mysim::FieldError;
   ExternalEngineSpec spec;
@@ -55,7 +62,19 @@ ExternalEngineSpec readEntry(mysim::FieldReader& r) {
       const std::size_t close = text.find('}', at);
       if (close == std::string::npos) break;  // a lone brace is the program's business
       const std::string name = text.substr(at + 1, close - at - 1);
-      if (!placeholders().count(name) && !(name.starts_with("env:") && name.size() > 4)) {
+      if (name.find('{') != std::string::npos) {
+        throw FieldError{r.field("command") + "[" + std::to_string(k) + "]",
+                         "a placeholder inside a placeholder ('{" + mysim::clip(name, 40) +
+                             "}'): placeholders are replaced in one pass and never nest; write "
+                             "each one on its own ({{ and }} for a literal brace)"};
+      }
+      if (name.starts_with("env:") && !isEnvironmentName(name.substr(4))) {
+        throw FieldError{r.field("command") + "[" + std::to_string(k) + "]",
+                         "{" + mysim::clip(name, 40) +
+                             "}: expected {env:NAME} with NAME letters, digits and '_', not "
+                             "starting with a digit"};
+      }
+      if (!placeholders().count(name) && !name.starts_with("env:")) {
         throw FieldError{r.field("command") + "[" + std::to_string(k) + "]",
                          "unknown placeholder {" + mysim::clip(name, 40) +
                              "} (known: {model} {out} {dir} {python} {dt} {duration} {integrator} "

@@ -51,6 +51,36 @@ std::expected<std::vector<std::vector<double>>, std::string> readNumberCsv(const
 
 }  // namespace
 
+namespace {
+
+// Every value finite, but for a declared blow-up's last frame: an engine that stops when its
+// state turns non-finite may return that frame, which is then dropped and named in the reason
+// (so the record says "non-finite", at the time the engine declared). A non-finite value anywhere
+// else refuses the result, naming frame and particle.
+std::optional<std::string> nonFiniteFrames(ExternalResult& result, const std::vector<double>& data,
+                                           std::size_t& frames, std::size_t particles) {
+  for (std::size_t k = 0; k < data.size(); ++k) {
+    if (std::isfinite(data[k])) continue;
+    const std::size_t f = k / (6 * particles), p = (k / 6) % particles;
+    if (result.blowup_time && f + 1 == frames && frames > 1) {
+      result.blowup_reason += std::string(result.blowup_reason.empty() ? "" : "; ") +
+                              "its last frame (t = " + std::to_string(result.times[f]) +
+                              " s) held non-finite values (dropped)";
+      frames -= 1;
+      result.times.resize(frames);
+      return std::nullopt;
+    }
+    return "non-finite value in frame " + std::to_string(f) + " (t = " +
+           std::to_string(result.times[f]) + " s), particle " + std::to_string(p) +
+           (result.blowup_time ? " before the last frame of a declared blow-up"
+                               : " (an engine that blows up stops and declares it in "
+                                 "summary.json)");
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::expected<ExternalResult, std::string> readExternalResult(const std::string& engine,
                                                               const std::string& out_dir,
                                                               int particles, const FramePlan& plan,
@@ -126,7 +156,7 @@ std::expected<ExternalResult, std::string> readExternalResult(const std::string&
   }
 
   // Frames.
-  const std::size_t frames = result.times.size();
+  std::size_t frames = result.times.size();
   std::vector<double> data;
   std::string trajectory_file = "trajectory.npy";
   if (present("trajectory.npy")) {
@@ -198,15 +228,7 @@ std::expected<ExternalResult, std::string> readExternalResult(const std::string&
                             " frames, and summary.json declares no blow-up: the run is "
                             "incomplete");
   }
-  for (std::size_t k = 0; k < data.size(); ++k) {
-    if (!std::isfinite(data[k])) {
-      const std::size_t f = k / (6 * particles), p = (k / 6) % particles;
-      return bad(trajectory_file,
-                 "non-finite value in frame " + std::to_string(f) + " (t = " +
-                     std::to_string(result.times[f]) + " s), particle " + std::to_string(p) +
-                     " (an engine that blows up stops and declares it in summary.json)");
-    }
-  }
+  if (auto why = nonFiniteFrames(result, data, frames, particles)) return bad(trajectory_file, *why);
   result.frames.resize(frames);
   for (std::size_t f = 0; f < frames; ++f) {
     result.frames[f] = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor>>(

@@ -91,8 +91,19 @@ std::expected<void, std::string> writeFolderWhole(
     const std::string& path, const FolderKind& kind,
     const std::function<std::expected<void, std::string>(const std::string& staging)>& body) {
   const fs::path target = fs::path(path).lexically_normal();
-  const fs::path folder = target.filename().empty() ? target.parent_path() : target;
+  fs::path folder = target.filename().empty() ? target.parent_path() : target;
   std::error_code ec;
+  // A link to a folder is followed: the results go into the folder it names (staged beside it, so
+  // the swap stays on its file system), and the link stays a link.
+  if (fs::is_symlink(fs::symlink_status(folder, ec))) {
+    const fs::path real = fs::canonical(folder, ec);
+    if (ec || !fs::is_directory(real, ec)) {
+      return std::unexpected(folder.string() + ": a symbolic link to " +
+                             fs::read_symlink(folder, ec).string() +
+                             ", which is not a folder; give a folder or a link to one");
+    }
+    folder = real;
+  }
   const bool existed = fs::exists(fs::symlink_status(folder, ec));
   if (existed) {
     if (!fs::is_directory(fs::symlink_status(folder, ec))) {

@@ -1,5 +1,9 @@
 #include "compare/studies/sweep.h"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -259,8 +263,32 @@ std::expected<std::map<int, SweepRow>, std::string> rowsSoFar(const std::string&
 
 }  // namespace
 
+// One sweep writes a table at a time: a second one would read the first's journal as its own
+// rows and each would write the table over the other's. An advisory lock on TABLE.lock, held for
+// the sweep's life and released by the kernel however it ends; the file itself stays (removing it
+// would let a third sweep lock a new file while the second holds the old one).
+class TableLock {
+ public:
+  explicit TableLock(const std::string& table)
+      : fd_(::open((table + ".lock").c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644)) {}
+  ~TableLock() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  TableLock(const TableLock&) = delete;
+  TableLock& operator=(const TableLock&) = delete;
+  bool acquire() { return fd_ >= 0 && ::flock(fd_, LOCK_EX | LOCK_NB) == 0; }
+
+ private:
+  int fd_;
+};
+
 std::expected<int, std::string> runSweep(const EngineRegistry& registry, const SweepSpec& spec,
                                          const std::string& out_csv, const SweepOptions& options) {
+  TableLock lock(out_csv);
+  if (!lock.acquire()) {
+    return std::unexpected(out_csv + ": another sweep is writing this table now (it holds " +
+                           out_csv + ".lock); wait for it to finish, or give another --out");
+  }
   auto so_far = rowsSoFar(out_csv, options.resume);
   if (!so_far) return std::unexpected(so_far.error());
   std::vector<SweepCase> todo;

@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   springcheck::addSweepCommands(app, exit_code);
   springcheck::addStabilityCommand(app, exit_code);
   springcheck::addRefineCommand(app, exit_code);
+  springcheck::addRoundoffCommand(app, exit_code);
   springcheck::addRecommendCommand(app, exit_code);
   springcheck::addReportCommand(app, exit_code);
   springcheck::addEngineCommand(app, exit_code);

@@ -55,10 +55,14 @@ std::optional<LimitError> checkMagnitudes(const Model& model) {
     if (auto e = outOfScale(model.mass[p], "particle " + std::to_string(p) + "'s mass (kg)")) {
       return LimitError{massField(model, p), *e};
     }
+    // Coordinates only from above: a tiny one is just near the origin (a rotation leaves 6e-17).
     for (int c = 0; c < 3; ++c) {
-      if (auto e = outOfScale(model.start_position[3 * p + c],
-                              "particle " + std::to_string(p) + "'s coordinate (m)")) {
-        return LimitError{"system", *e + "; sizes and origins give the coordinates"};
+      const double x = model.start_position[3 * p + c];
+      if (!std::isfinite(x) || std::abs(x) > kLargestScale) {
+        return LimitError{"system", "particle " + std::to_string(p) + "'s coordinate is " +
+                                        text(x) + " m: beyond " + text(kLargestScale) +
+                                        " m, where double precision can step it; sizes and "
+                                        "origins give the coordinates (mysim/model_scales.h)"};
       }
     }
   }
@@ -66,6 +70,10 @@ std::optional<LimitError> checkMagnitudes(const Model& model) {
     const Spring& sp = model.springs[s];
     if (auto e = outOfScale(sp.stiffness, "spring " + std::to_string(s) + "'s stiffness (N/m)")) {
       return LimitError{springSource(model, s, "stiffness"), *e};
+    }
+    if (auto e = outOfScale(sp.rest_length, "spring " + std::to_string(s) + "'s rest length (m)")) {
+      return LimitError{model.material ? "system" : springField(model, s, "rest_length"),
+                        *e + "; sizes and resolutions give the lengths"};
     }
     if (auto e = outOfScale(sp.damping, "spring " + std::to_string(s) + "'s damping (N s/m)")) {
       return LimitError{springSource(model, s, "damping"), *e};

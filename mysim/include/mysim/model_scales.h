@@ -1,6 +1,6 @@
 #pragma once
 // The numbers a model is made of must be ones double precision can step: every mass, stiffness,
-// damping, drag, gravity, coordinate and the step between kSmallestScale and kLargestScale (when
+// damping, drag, gravity, rest length and the step (and every coordinate from above) between kSmallestScale and kLargestScale (when
 // not 0), and a step that does not swamp the stiffest spring's inertia.
 // Checked before a run, so a strip of density 1e300 (whose squared forces overflow inside the
 // solver, so it "ran" with status ok and never moved) is refused, naming the field.

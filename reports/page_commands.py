@@ -7,7 +7,8 @@ import json
 def commands(m):
     """page key -> the command that made its table."""
     found = {"dashboard": "scripts/run-suite.sh   (the main job: every table below, then this report)",
-             "performance": "scripts/run-bench.sh"}
+             "performance": "scripts/run-bench.sh",
+             "timings": "scripts/run-suite.sh   (it times each stage: out/timings.json)"}
     suite = next((c["command"] for c in m["comparisons"] if c["group"] == "suite" and c.get("command")), None)
     for key in ("verdicts", "sag_1", "sag_2", "sag_3", "penetration_1", "penetration_2"):
         if suite:

@@ -11,6 +11,7 @@ import performance_page
 import refine_pages
 import series_pages
 import stability_pages
+import timings_page
 import trade_pages
 import verdict_page
 
@@ -34,4 +35,6 @@ def pages(ctx):
     result.append(glossary_page.page())
     if m["missing"]:
         result.append(missing_page.page(m["missing"]))
+    if m.get("timings"):
+        result.append(timings_page.page(m["timings"]))
     return page_commands.attach(result, m)

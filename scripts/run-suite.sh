@@ -10,59 +10,110 @@
 #   out/recommend/  the cheapest engine, integrator and step under 1 mm of error, per sweep, and
 #                   each solver family's cheapest under 1 mm and 1 cm
 #   out/report/     report.pdf and one PNG per figure
+#   out/timings.json each stage's wall time, the total after the build, and the machine (cores,
+#                   STREAM triad bandwidth); printed as each stage ends
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/setup.sh default springcheck
+scripts/setup.sh default springcheck springcheck_bench
 B=build/release/cli/springcheck
 OUT=${SPRINGCHECK_OUT:-out}
-start=$(date +%s)
+mkdir -p "$OUT"
+start=$(date +%s.%N)
+
+# stage NAME COMMAND...: runs the command, prints and records its wall time; its exit code is
+# the command's, so `stage ... || [ $? -eq 3 ]` keeps working.
+stage_names=() stage_seconds=()
+stage() {
+  local name=$1 t0 rc=0
+  shift
+  t0=$(date +%s.%N)
+  "$@" || rc=$?
+  local seconds
+  seconds=$(awk -v a="$(date +%s.%N)" -v b="$t0" "BEGIN { print a - b }")
+  stage_names+=("$name") stage_seconds+=("$seconds")
+  printf 'stage %-22s %7.1f s\n' "$name" "$seconds" >&2
+  return "$rc"
+}
+# The machine, for the report's last page: cores and the STREAM triad (Google Benchmark's
+# BM_StreamTriad, bench/bandwidth_bench.cpp), measured before the stages, alone.
+stream_bytes=$(build/release/bench/springcheck_bench --benchmark_filter='^BM_StreamTriad$' \
+  --benchmark_format=json 2>/dev/null | sed -n 's/.*"bytes_per_second": \([0-9.e+]*\).*/\1/p' | head -1)
 
 # Every engine of the registry, the example external engine (examples/external/) included.
 E=examples/external/engines.json
 # Exit 3: some engine blew up on some scene (explicit ones at the material scenes' 2 ms step):
 # a result the report shows, not a failure of the job.
-$B suite scenes --out "$OUT/suite" --engines-file "$E" || [ $? -eq 3 ]
+stage suite $B suite scenes --out "$OUT/suite" --engines-file "$E" || [ $? -eq 3 ]
 gate_status=0
-$B gate --json "$OUT/gate.json" || gate_status=$?
+stage gate $B gate --json "$OUT/gate.json" || gate_status=$?
 
 # Every integrator on an undamped and a damped scene. Forward Euler blows up on the undamped
 # chain (exit 3): that is a result, recorded and drawn, not a failure of the job.
 # (--engines all: mysim once per integrator of the catalogue, then every other engine.)
 for scene in chain_swing chain_hanging; do
-  $B compare "scenes/matched/$scene.json" --out "$OUT/energy/$scene" --engines all \
-    --engines-file "$E" >/dev/null || [ $? -eq 3 ]
+  stage "energy $scene" $B compare "scenes/matched/$scene.json" --out "$OUT/energy/$scene" \
+    --engines all --engines-file "$E" >/dev/null || [ $? -eq 3 ]
 done
 
 for spec in compare/sweeps/*.json; do
-  $B sweep "$spec" --fresh --out "$OUT/sweep/$(basename "$spec" .json).csv"
+  stage "sweep $(basename "$spec" .json)" \
+    $B sweep "$spec" --fresh --out "$OUT/sweep/$(basename "$spec" .json).csv"
 done
 # The answer users want, for the report's first page: the cheapest choice under 1 mm of error on
 # each sweep measured against one converged reference (exit 1 when nothing qualifies: a result).
 mkdir -p "$OUT/recommend"
-for table in "$OUT"/sweep/chain_convergence.csv "$OUT"/sweep/cloth_speed_accuracy.csv \
-    "$OUT"/sweep/solver_families.csv; do
-  $B recommend "$table" --max-error 1e-3 --json "$OUT/recommend/$(basename "$table" .csv).json" \
-    >/dev/null || [ $? -eq 1 ]
-done
-# Which solver family at 1 cm too (the report's solver-family page sets the two bounds side by side).
-$B recommend "$OUT"/sweep/solver_families.csv --max-error 1e-2 \
-  --json "$OUT/recommend/solver_families_1cm.json" >/dev/null || [ $? -eq 1 ]
-$B stability --out "$OUT/stability" --extremes >/dev/null
+recommend_all() {
+  for table in "$OUT"/sweep/chain_convergence.csv "$OUT"/sweep/cloth_speed_accuracy.csv \
+      "$OUT"/sweep/solver_families.csv; do
+    $B recommend "$table" --max-error 1e-3 --json "$OUT/recommend/$(basename "$table" .csv).json" \
+      >/dev/null || [ $? -eq 1 ]
+  done
+  # Which solver family at 1 cm too (the report's solver-family page sets the two bounds side by
+  # side).
+  $B recommend "$OUT"/sweep/solver_families.csv --max-error 1e-2 \
+    --json "$OUT/recommend/solver_families_1cm.json" >/dev/null || [ $? -eq 1 ]
+}
+stage recommend recommend_all
+stage "stability oscillator" $B stability --out "$OUT/stability" --extremes >/dev/null
 # Every engine's stability map on the chain and the cloth, with the w_max theory lines (the
 # cloth over two mass ratios to stay inside the job's time; --mass-ratios 1,100,1e4 for all).
-$B stability --scene scenes/matched/chain_swing.json --out "$OUT/stability" >/dev/null
-$B stability --scene scenes/matched/cloth_hanging.json --mass-ratios 1,1e4 --out "$OUT/stability" >/dev/null
+stage "stability chain_swing" \
+  $B stability --scene scenes/matched/chain_swing.json --out "$OUT/stability" >/dev/null
+stage "stability cloth_hanging" $B stability --scene scenes/matched/cloth_hanging.json \
+  --mass-ratios 1,1e4 --out "$OUT/stability" >/dev/null
 # The families that claim unconditional stability, on the cloth up to h w_max = 3000 (1/60 s and
 # beyond on its stiffest springs): where each stops having it (backward Euler beside them).
-$B stability --scene scenes/matched/cloth_hanging.json --name cloth_hanging_large_steps \
+stage "stability large steps" $B stability --scene scenes/matched/cloth_hanging.json \
+  --name cloth_hanging_large_steps \
   --engines mysim:xpbd,mysim:local-global,mysim:vbd,mysim:backward-euler --stiffness-scales 1,100 \
   --mass-ratios 1,1e4 --max-h-omega 3000 --out "$OUT/stability" >/dev/null
 # Mesh refinement: the cantilever against the elastica, the flex-spring strip, the drape test,
 # the cable against the continuous catenary.
-$B refine scenes/material/cantilever_strip.json scenes/material/cantilever_strip_flex.json \
-  scenes/material/cusick_drape.json scenes/material/cable_catenary.json --resolutions 4,8,16 \
-  --engines mysim,bullet-implicit \
+stage refine $B refine scenes/material/cantilever_strip.json \
+  scenes/material/cantilever_strip_flex.json scenes/material/cusick_drape.json \
+  scenes/material/cable_catenary.json --resolutions 4,8,16 --engines mysim,bullet-implicit \
   --out "$OUT/refine" >/dev/null || [ $? -eq 3 ]
-$B report --results "$OUT" --out "$OUT/report"
-echo "main job done in $(( $(date +%s) - start )) s; report: $OUT/report/report.pdf"
+
+# The timings so far (the report draws them on its last page), then the report's own.
+write_timings() {
+  local total
+  total=$(awk -v a="$(date +%s.%N)" -v b="$start" "BEGIN { print a - b }")
+  {
+    printf '{\n  "stages": [\n'
+    for k in "${!stage_names[@]}"; do
+      printf '    {"name": "%s", "seconds": %.2f}%s\n' "${stage_names[$k]}" "${stage_seconds[$k]}" \
+        "$([ "$k" -lt $((${#stage_names[@]} - 1)) ] && echo ,)"
+    done
+    printf '  ],\n  "total_seconds": %.2f,\n' "$total"
+    printf '  "machine": {"cores": %d, "stream_triad_bytes_per_second": %s, "cpu": "%s"}\n}\n' \
+      "$(nproc)" "${stream_bytes:-null}" \
+      "$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1 | tr -d '"\\')"
+  } > "$OUT/timings.json.tmp" && mv "$OUT/timings.json.tmp" "$OUT/timings.json"
+}
+write_timings
+stage report $B report --results "$OUT" --out "$OUT/report"
+write_timings  # with the report's own time (the page shows the stages before it)
+total=$(awk -v a="$(date +%s.%N)" -v b="$start" "BEGIN { print a - b }")
+printf 'main job done in %.0f s after the build (each stage above; %s); report: %s\n' "$total" \
+  "$OUT/timings.json" "$OUT/report/report.pdf"
 exit "$gate_status"

@@ -38,12 +38,19 @@ for scene in scenes/matched/cloth_on_sphere.json "$OUT/user_cloth.json"; do
 done
 $B refine scenes/material/cantilever_strip.json --resolutions 2,4,8 --engines mysim,pysim --engines-file $E \
   --out "$OUT/refine" >/dev/null 2>&1 || [ $? -eq 3 ]  # pysim blows up at the scene's 2 ms: said, not fatal
+# The main job's stage times, as scripts/run-suite.sh writes them: the last page draws them.
+cat > "$OUT/timings.json" <<'JSON'
+{"stages": [{"name": "suite", "seconds": 41.5}, {"name": "sweep solver_families", "seconds": 170.2},
+            {"name": "refine", "seconds": 60.0}],
+ "total_seconds": 280.0, "machine": {"cores": 2, "stream_triad_bytes_per_second": 9.5e9, "cpu": "x"}}
+JSON
 $B report --results "$OUT" --out "$OUT/report" || fail "springcheck report failed"
 
 # Every page the inputs call for, by name; pysim and the user's scene among them.
 for page in dashboard speed_accuracy_small_convergence convergence_small_convergence stability_oscillator \
             stability_chain_hanging energy_energy_chain_swing energy_energy_chain_hanging \
-            drape_suite_cloth_on_sphere drape_suite_user_cloth sag_1 penetration_1 refine_cantilever_strip; do
+            drape_suite_cloth_on_sphere drape_suite_user_cloth sag_1 penetration_1 refine_cantilever_strip \
+            timings; do
   ls "$OUT/report/"[0-9][0-9]_"$page.png" >/dev/null 2>&1 || fail "no page $page"
 done
 for png in "$OUT"/report/*.png; do [ -s "$png" ] || fail "empty $png"; done

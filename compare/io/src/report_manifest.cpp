@@ -268,6 +268,10 @@ std::expected<json, std::string> reportManifest(const std::string& results_dir,
     missing(bench.string(), "SPRINGCHECK_OUT=" + r + " scripts/run-bench.sh (from a checkout)",
             "performance: time per step and force evaluations of each engine");
   }
+  // The main job's stage times (scripts/run-suite.sh writes them): the last page's table.
+  const fs::path timings = results / "timings.json";
+  std::error_code regular;
+  m["timings"] = fs::is_regular_file(timings, regular) ? json(timings.string()) : json();
   return m;
 }
 

@@ -48,6 +48,35 @@ TEST(ExamplePythonEngine, ReproducesTheVerticalChainClosedFormSag) {
   EXPECT_LT(error->error, 1e-4);
 }
 
+// An engine's run of a shipped scene beside mysim's, with the integrator given (XPBD at 4
+// substeps of 5 passes), dt (0: the scene's) and duration; both complete, frame for frame.
+struct PairOfRuns {
+  mysim::Scene scene;
+  mysim::RunRecord external, own;
+};
+std::optional<PairOfRuns> runBeside(const EngineRegistry& registry, const std::string& engine,
+                                    const std::string& name, const std::string& integrator,
+                                    double dt, double duration) {
+  mysim::Scene s = scene(registry, name);
+  s.integrator.name = integrator;
+  if (integrator == "xpbd") {
+    s.integrator.values["substeps"] = 4;
+    s.integrator.values["iterations"] = 5;
+  }
+  if (dt > 0) s.dt = dt;
+  s.duration = duration;
+  auto external = registry.run(engine, s);
+  auto own = registry.run("mysim", s);
+  EXPECT_TRUE(external) << external.error().message;
+  EXPECT_TRUE(own) << own.error().message;
+  if (!external || !own || own->blowup || external->blowup ||
+      external->frames.size() != own->frames.size()) {
+    ADD_FAILURE() << engine << " or mysim did not complete " << name << " frame for frame";
+    return std::nullopt;
+  }
+  return PairOfRuns{s, std::move(*external), std::move(*own)};
+}
+
 // The example engine follows the protocol page's rules operation by operation, so it agrees with
 // mysim to the bit. One case a rule, on a scene where the rule decides the last bits: each other
 // reading of the rule was measured to move some node (the page lists them): `rest / l` instead of
@@ -69,29 +98,17 @@ class ExampleEngineRule : public ::testing::TestWithParam<RuleCase> {};
 TEST_P(ExampleEngineRule, MatchesMysimBitForBitAtEveryFrame) {
   const RuleCase& c = GetParam();
   const EngineRegistry registry = registryWith("examples/external/engines.json");
-  mysim::Scene s = scene(registry, c.scene);
-  s.integrator.name = c.integrator;
-  if (c.integrator == "xpbd") {
-    s.integrator.values["substeps"] = 4;
-    s.integrator.values["iterations"] = 5;
-  }
-  if (c.dt > 0) s.dt = c.dt;
-  s.duration = c.duration;
-  auto external = registry.run("pysim", s);
-  auto own = registry.run("mysim", s);
-  ASSERT_TRUE(external) << external.error().message;
-  ASSERT_TRUE(own) << own.error().message;
-  ASSERT_FALSE(own->blowup);
-  ASSERT_FALSE(external->blowup);
-  ASSERT_EQ(external->frames.size(), own->frames.size());
+  const auto runs = runBeside(registry, "pysim", c.scene, c.integrator, c.dt, c.duration);
+  ASSERT_TRUE(runs);
+  const auto& [s, external, own] = *runs;
   double worst = 0.0;
-  for (std::size_t f = 0; f < own->frames.size(); ++f) {
-    EXPECT_NEAR(external->times[f], own->times[f], 1e-9 * s.dt);
-    worst = std::max(worst, (external->frames[f] - own->frames[f]).cwiseAbs().maxCoeff());
+  for (std::size_t f = 0; f < own.frames.size(); ++f) {
+    EXPECT_NEAR(external.times[f], own.times[f], 1e-9 * s.dt);
+    worst = std::max(worst, (external.frames[f] - own.frames[f]).cwiseAbs().maxCoeff());
   }
   EXPECT_EQ(worst, 0.0) << "largest coordinate or velocity difference over all frames: " << worst;
-  EXPECT_EQ(external->engine, "pysim");
-  EXPECT_EQ(external->counts.derivative_evaluations, own->counts.derivative_evaluations);
+  EXPECT_EQ(external.engine, "pysim");
+  EXPECT_EQ(external.counts.derivative_evaluations, own.counts.derivative_evaluations);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -129,25 +146,13 @@ class ProtocolEngine : public ::testing::TestWithParam<ProtocolCase> {};
 TEST_P(ProtocolEngine, MatchesMysimToRoundOffAtEveryFrame) {
   const ProtocolCase& c = GetParam();
   const EngineRegistry registry = registryWith("tests/protocol/engines.json");
-  mysim::Scene s = scene(registry, c.scene);
-  s.integrator.name = c.integrator;
-  if (c.integrator == "xpbd") {
-    s.integrator.values["substeps"] = 4;
-    s.integrator.values["iterations"] = 5;
-  }
-  if (c.dt > 0) s.dt = c.dt;
-  s.duration = c.duration;
-  auto external = registry.run("jsim", s);
-  auto own = registry.run("mysim", s);
-  ASSERT_TRUE(external) << external.error().message;
-  ASSERT_TRUE(own) << own.error().message;
-  ASSERT_FALSE(own->blowup);
-  ASSERT_FALSE(external->blowup);
-  ASSERT_EQ(external->frames.size(), own->frames.size());
+  const auto runs = runBeside(registry, "jsim", c.scene, c.integrator, c.dt, c.duration);
+  ASSERT_TRUE(runs);
+  const auto& [s, external, own] = *runs;
   double worst = 0.0;
-  for (std::size_t f = 0; f < own->frames.size(); ++f) {
-    worst = std::max(worst, nodeDistance(external->frames[f].leftCols<3>(),
-                                         own->frames[f].leftCols<3>()).max);
+  for (std::size_t f = 0; f < own.frames.size(); ++f) {
+    worst = std::max(worst, nodeDistance(external.frames[f].leftCols<3>(),
+                                         own.frames[f].leftCols<3>()).max);
   }
   // Scenes of 1 m or less: an ulp a step over at most 1600 steps is below 1e-12 m; a rule the
   // page left out or got wrong (a half-step velocity, a stage time, a pin held still inside a

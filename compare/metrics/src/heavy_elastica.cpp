@@ -11,16 +11,11 @@ namespace {
 // State in sigma = s / L: theta, theta', x, y (drop).
 using ElasticaState = std::array<double, 4>;
 
-ElasticaState integrate(double load, double clamp_curvature) {
-  constexpr int kSteps = 5000;  // RK4 error ~ (2e-4)^4 times the load squared: below 1e-12 of L
-  const double h = 1.0 / kSteps;
-  auto rate = [load](double sigma, const ElasticaState& u) {
-    return ElasticaState{u[1], -load * (1.0 - sigma) * std::cos(u[0]), std::cos(u[0]),
-                         std::sin(u[0])};
-  };
-  ElasticaState u{0.0, clamp_curvature, 0.0, 0.0};
-  for (int k = 0; k < kSteps; ++k) {
-    const double sigma = k * h;
+// Fourth-order Runge-Kutta: `steps` steps of h from sigma0 (h < 0 runs towards the clamp).
+template <typename Rate>
+ElasticaState rk4(const Rate& rate, ElasticaState u, double sigma0, double h, int steps) {
+  for (int k = 0; k < steps; ++k) {
+    const double sigma = sigma0 + k * h;  // sigma0 = 0: exactly k h
     const ElasticaState k1 = rate(sigma, u);
     ElasticaState v;
     for (int i = 0; i < 4; ++i) v[i] = u[i] + 0.5 * h * k1[i];
@@ -32,6 +27,16 @@ ElasticaState integrate(double load, double clamp_curvature) {
     for (int i = 0; i < 4; ++i) u[i] += h / 6.0 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
   }
   return u;
+}
+
+ElasticaState integrate(double load, double clamp_curvature) {
+  constexpr int kSteps = 5000;  // RK4 error ~ (2e-4)^4 times the load squared: below 1e-12 of L
+  const double h = 1.0 / kSteps;
+  auto rate = [load](double sigma, const ElasticaState& u) {
+    return ElasticaState{u[1], -load * (1.0 - sigma) * std::cos(u[0]), std::cos(u[0]),
+                         std::sin(u[0])};
+  };
+  return rk4(rate, ElasticaState{0.0, clamp_curvature, 0.0, 0.0}, 0.0, h, kSteps);
 }
 
 // The root of theta'(1) = 0 over kappa0 = theta'(0) in [a, b], where it changes sign, by the
@@ -81,19 +86,7 @@ FromTip integrateFromTip(double load, double delta1) {
     return ElasticaState{u[1], load * (1.0 - sigma) * std::sin(u[0]), std::sin(u[0]),
                          std::cos(u[0])};
   };
-  ElasticaState u{delta1, 0.0, 0.0, 0.0};
-  for (int k = 0; k < steps; ++k) {
-    const double sigma = 1.0 + k * h;
-    const ElasticaState k1 = rate(sigma, u);
-    ElasticaState v;
-    for (int i = 0; i < 4; ++i) v[i] = u[i] + 0.5 * h * k1[i];
-    const ElasticaState k2 = rate(sigma + 0.5 * h, v);
-    for (int i = 0; i < 4; ++i) v[i] = u[i] + 0.5 * h * k2[i];
-    const ElasticaState k3 = rate(sigma + 0.5 * h, v);
-    for (int i = 0; i < 4; ++i) v[i] = u[i] + h * k3[i];
-    const ElasticaState k4 = rate(sigma + h, v);
-    for (int i = 0; i < 4; ++i) u[i] += h / 6.0 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
-  }
+  const ElasticaState u = rk4(rate, ElasticaState{delta1, 0.0, 0.0, 0.0}, 1.0, h, steps);
   // Integrated from 1 down to 0: the sums are minus the clamp-to-tip integrals; theta' = -delta'.
   return {u[0], -u[1], -u[2], -u[3]};
 }

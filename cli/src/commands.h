@@ -35,6 +35,10 @@ int exitCodeFor(const EngineError& error);
 
 // --repeats, --threads, --fixed-threads (docs/timing.md).
 void addTimingOptions(CLI::App* command, Timing& timing, int default_repeats);
+// The scene at `path` with --dt and --duration applied (0: the scene's own), or nothing after
+// printing the error (the file and field it names).
+std::optional<mysim::Scene> loadSceneOrSay(const EngineRegistry& registry, const std::string& path,
+                                           double dt = 0.0, double duration = 0.0);
 
 // A flag value that must be a number > 0 (CLI11's PositiveNumber prints its whole double range).
 inline const CLI::Validator kPositive(

@@ -31,13 +31,8 @@ int compare(const CompareOptions& o) {
   }
   const std::optional<EngineRegistry> registry = makeRegistry(o.engines_files);
   if (!registry) return kBadInput;
-  auto scene = registry->loadScene(o.scene_path);
-  if (!scene) {
-    std::cerr << "error: " << scene.error() << '\n';
-    return kBadInput;
-  }
-  if (o.dt > 0.0) scene->dt = o.dt;
-  if (o.duration > 0.0) scene->duration = o.duration;
+  auto scene = loadSceneOrSay(*registry, o.scene_path, o.dt, o.duration);
+  if (!scene) return kBadInput;
   const std::vector<std::string> engines =
       o.engines.empty() ? registry->names() : registry->expand(splitList(o.engines));
   auto comparison = compareScene(*registry, *scene, engines, o.timing);

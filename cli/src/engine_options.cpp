@@ -24,6 +24,18 @@ std::optional<EngineRegistry> makeRegistry(const std::vector<std::string>& files
   return registry;
 }
 
+std::optional<mysim::Scene> loadSceneOrSay(const EngineRegistry& registry, const std::string& path,
+                                           double dt, double duration) {
+  auto scene = registry.loadScene(path);
+  if (!scene) {
+    std::cerr << "error: " << scene.error() << '\n';
+    return std::nullopt;
+  }
+  if (dt > 0.0) scene->dt = dt;
+  if (duration > 0.0) scene->duration = duration;
+  return std::move(*scene);
+}
+
 void addTimingOptions(CLI::App* command, Timing& timing, int default_repeats) {
   timing.repeats = default_repeats;
   command

@@ -54,12 +54,8 @@ std::vector<double> differenceOf(const RoundoffSensitivity& a, const RoundoffSen
 int roundoff(const RoundoffOptions& o) {
   const std::optional<EngineRegistry> registry = makeRegistry(o.engines_files);
   if (!registry) return kBadInput;
-  auto scene = registry->loadScene(o.scene_path);
-  if (!scene) {
-    std::cerr << "error: " << scene.error() << '\n';
-    return kBadInput;
-  }
-  if (o.duration > 0.0) scene->duration = o.duration;
+  auto scene = loadSceneOrSay(*registry, o.scene_path, 0.0, o.duration);
+  if (!scene) return kBadInput;
   const std::vector<std::string> engines = splitList(o.engines);
   if (engines.empty() || engines.size() > 2) {
     std::cerr << "error: --engines: expected one engine, or two to compare, got "

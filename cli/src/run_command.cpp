@@ -23,11 +23,8 @@ struct RunOptions {
 int runScene(const RunOptions& o) {
   const std::optional<EngineRegistry> registry = makeRegistry(o.engines_files);
   if (!registry) return kBadInput;
-  auto scene = registry->loadScene(o.scene_path);
-  if (!scene) {
-    std::cerr << "error: " << scene.error() << '\n';
-    return kBadInput;
-  }
+  auto scene = loadSceneOrSay(*registry, o.scene_path, o.dt, o.duration);
+  if (!scene) return kBadInput;
   // Flags override the scene; they are checked as the file's fields would be.
   if (!o.integrator.empty()) {
     auto name = mysim::canonicalIntegratorName(o.integrator);
@@ -37,8 +34,6 @@ int runScene(const RunOptions& o) {
     }
     scene->integrator.name = *name;
   }
-  if (o.dt > 0.0) scene->dt = o.dt;
-  if (o.duration > 0.0) scene->duration = o.duration;
   if (o.classic_iterations > 0) {
     scene->engine_settings["bullet"]["classic_iterations"] = o.classic_iterations;
   }

@@ -16,7 +16,7 @@ rules ("Matching mysim's integrators to the last bit") operation by operation: f
 drag, wind, damped springs and hinges summed in mysim's order; pinned particles put on their
 prescribed path after the step; particles touching a collider (sphere, plane, box) moved onto
 its surface grown by its margin and stripped of their inward velocity. So it agrees with
-`mysim:symplectic-euler` and `mysim:xpbd` to the bit (tests/external_engine_test.cpp). Copy it
+`mysim:symplectic-euler` and `mysim:xpbd` to the bit (tests/protocol_rules_test.cpp). Copy it
 as the start of your own engine.
 """
 import json

@@ -5,7 +5,7 @@
 //     node jsim.mjs MODEL_JSON OUT_DIR
 //
 // It follows the model's integrator (euler, symplectic-euler, verlet, trapezoidal, rk4, dopri5,
-// xpbd) and writes times.npy and trajectory.npy. tests/protocol_engine_test.sh holds it to mysim:
+// xpbd) and writes times.npy and trajectory.npy. tests/protocol_rules_test.cpp holds it to mysim:
 // if the page leaves out a rule, the two part by more than round-off and the test says where.
 import fs from 'node:fs';
 import path from 'node:path';

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "compare/io/npy.h"
+#include "engine_test_support.h"
 #include "compare/metrics/closed_form.h"
 #include "compare/metrics/drape_metric.h"
 #include "mysim/wind.h"
@@ -20,19 +21,11 @@ namespace springcheck {
 namespace {
 
 namespace fs = std::filesystem;
-const std::string kRoot = SPRINGCHECK_SOURCE_DIR;
 
-EngineRegistry registryWith(const std::string& engines_file) {
-  EngineRegistry registry;
-  auto added = registry.addEnginesFile(kRoot + "/" + engines_file);
-  EXPECT_TRUE(added) << added.error();
-  return registry;
-}
+using test_support::registryWith;
 
 mysim::Scene scene(const EngineRegistry& registry, const std::string& name) {
-  auto s = registry.loadScene(kRoot + "/scenes/" + name);
-  EXPECT_TRUE(s) << s.error();
-  return *s;
+  return test_support::shippedScene(registry, name);
 }
 
 TEST(ExamplePythonEngine, ReproducesTheVerticalChainClosedFormSag) {

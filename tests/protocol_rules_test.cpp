@@ -7,24 +7,16 @@
 #include <optional>
 
 #include "compare/engines/engine_registry.h"
+#include "engine_test_support.h"
 #include "compare/metrics/drape_metric.h"
 
 namespace springcheck {
 namespace {
 
-const std::string kRoot = SPRINGCHECK_SOURCE_DIR;
-
-EngineRegistry registryWith(const std::string& engines_file) {
-  EngineRegistry registry;
-  auto added = registry.addEnginesFile(kRoot + "/" + engines_file);
-  EXPECT_TRUE(added) << added.error();
-  return registry;
-}
+using test_support::registryWith;
 
 mysim::Scene scene(const EngineRegistry& registry, const std::string& name) {
-  auto s = registry.loadScene(kRoot + "/scenes/" + name);
-  EXPECT_TRUE(s) << s.error();
-  return *s;
+  return test_support::shippedScene(registry, name);
 }
 
 // An engine's run of a shipped scene beside mysim's, with the integrator given (XPBD at 4

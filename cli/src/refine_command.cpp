@@ -15,10 +15,10 @@
 #include "compare/io/whole_folder.h"
 #include "compare/metrics/cantilever_metric.h"
 #include "compare/metrics/closed_form.h"
-#include "compare/metrics/elastic_catenary.h"
 #include "compare/metrics/run_metrics.h"
+#include "compare/studies/physical_reference.h"
 #include "compare/studies/refinement.h"
-#include "mysim/json_input.h"
+#include "compare/studies/trade_grid.h"
 #include "mysim/scene_file.h"
 
 namespace springcheck {
@@ -53,36 +53,12 @@ std::vector<const MetricInfo*> refinedMetrics() {
   return list;
 }
 
-// A material chain pinned at its two ends, level under gravity: the continuous elastic
-// catenary's midspan sag, the limit its sag converges to (elastic_catenary.h).
-std::optional<double> cableReference(const mysim::Scene& scene) {
-  if (scene.kind != mysim::SystemKind::Chain || scene.chain_end_mass == 0.0) return std::nullopt;
-  const mysim::ChainShape& c = scene.chain;
-  const double g = scene.gravity.norm();
-  if (g == 0.0 || std::abs(c.direction.normalized().dot(scene.gravity / g)) > 1e-12 ||
-      scene.pins != std::vector<int>{0, c.particles - 1}) {
-    return std::nullopt;
-  }
-  const int links = c.particles - 1;
-  const ElasticCatenary cable =
-      levelElasticCatenary(c.spacing * links, c.rest_length * links,
-                           c.particle_mass / c.rest_length * g, c.stiffness * c.rest_length);
-  if (cable.horizontal_tension == 0.0) return std::nullopt;
-  return cable.midspan_sag;
-}
-
 // The scene file with system.resolution set, read as any scene file is.
 std::expected<mysim::Scene, std::string> sceneAt(const EngineRegistry& registry,
                                                  const std::string& path, int resolution) {
-  auto root = mysim::readJsonFile(path, "scene file");
-  if (!root) return std::unexpected(root.error());
-  if (!root->is_object() || !root->contains("system") || !(*root)["system"].is_object() ||
-      !(*root)["system"].contains("material")) {
-    return std::unexpected(path + ": system.material: expected a material cloth (docs/materials.md): "
-                           "refine varies system.resolution, which only a material scene has");
-  }
-  (*root)["system"]["resolution"] = resolution;
-  return mysim::parseScene(root->dump(), path, registry.sceneSections());
+  auto text = sceneTextAtResolution(path, resolution);
+  if (!text) return std::unexpected(text.error());
+  return mysim::parseScene(*text, path, registry.sceneSections());
 }
 
 // Tables' number format (text_format.h); empty for a quantity the run does not have.
@@ -153,8 +129,8 @@ int refine(const RefineOptions& o) {
             row.reference = m.closed_form->exact;
             row.reference_quantity = "tip_drop";
           }
-          if (auto cable = cableReference(*scene)) {
-            row.reference = *cable;
+          if (auto cable = closedFormReference(*scene, model, "sag_lowest")) {
+            row.reference = *cable->value;
             row.reference_quantity = "sag_lowest";
           }
         }

@@ -7,13 +7,13 @@
 #include "mysim/integrator.h"
 
 namespace springcheck {
-namespace {
-
-std::string familyOf(const std::string& engine, const std::string& integrator) {
+std::string solverFamily(const std::string& engine, const std::string& integrator) {
   if (integrator.empty() || integrator == "-") return engine;
   const auto variant = mysim::parseIntegratorVariant(integrator);
   return variant ? mysim::familyName(mysim::findIntegrator(variant->name)->family) : integrator;
 }
+
+namespace {
 
 // Each key's first choice, in order (the list is cheapest first, so each first is the best).
 template <typename Key>
@@ -41,7 +41,7 @@ std::vector<Recommendation> recommend(const std::vector<SweepRow>& rows, double 
     Choice c;
     c.engine = row.c.engine;
     c.integrator = row.c.integrator;
-    c.family = familyOf(c.engine, c.integrator);
+    c.family = solverFamily(c.engine, c.integrator);
     c.tolerance = sweepField(row, "tolerance");
     c.dt = row.c.dt;
     c.error = *row.error;

@@ -115,6 +115,7 @@ EngineMetrics recordRun(SweepRow& row, const mysim::Model& model, const mysim::R
   if (!model.isCircle()) row.max_strain = metricValue(metrics, "max_strain");
   row.linear_momentum_drift = metricValue(metrics, "linear_momentum_drift");
   row.angular_momentum_drift = metricValue(metrics, "angular_momentum_drift");
+  row.quantities = settledQuantities(model, {row.c.engine, r}, metrics);
   for (const std::string& n : r.notes) addNote(row, n);
   return metrics;
 }

@@ -59,6 +59,35 @@ Column optional(const char* name, std::optional<T> SweepRow::*field) {
           }};
 }
 
+// "name=END:EARLIER" per quantity, joined by ';' (no comma: one CSV field without quotes).
+std::string quantitiesText(const SettledQuantities& quantities) {
+  std::string out;
+  for (const auto& [name, q] : quantities) {
+    out += (out.empty() ? "" : ";") + name + "=" + number(q.end) + ":" + number(q.earlier);
+  }
+  return out;
+}
+
+bool readQuantities(const std::string& text, SettledQuantities& quantities) {
+  quantities.clear();
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t stop = text.find(';', start);
+    if (stop == std::string::npos) stop = text.size();
+    const std::string item = text.substr(start, stop - start);
+    const std::size_t eq = item.find('='), colon = item.find(':');
+    if (eq == std::string::npos || eq == 0 || colon == std::string::npos || colon < eq) return false;
+    SettledQuantity q;
+    if (!parseNumber(item.substr(eq + 1, colon - eq - 1), q.end) ||
+        !parseNumber(item.substr(colon + 1), q.earlier)) {
+      return false;
+    }
+    quantities[item.substr(0, eq)] = q;
+    start = stop + 1;
+  }
+  return true;
+}
+
 const std::vector<Column>& columns() {
   using R = SweepRow;
   static const std::vector<Column> table = {
@@ -104,6 +133,8 @@ const std::vector<Column>& columns() {
       optional("max_strain", &R::max_strain),
       optional("linear_momentum_drift", &R::linear_momentum_drift),
       optional("angular_momentum_drift", &R::angular_momentum_drift),
+      {"quantities", [](const R& r) { return quantitiesText(r.quantities); },
+       [](R& r, const std::string& s) { return readQuantities(s, r.quantities); }},
       text("note", &R::note),
   };
   return table;

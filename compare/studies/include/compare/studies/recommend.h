@@ -48,6 +48,10 @@ struct Recommendation {
   std::vector<Choice> closest_per_family;
 };
 
+// The solver family a run stands for: its mysim integrator's catalogue family ("implicit",
+// "position-based", ...), else the engine's name.
+std::string solverFamily(const std::string& engine, const std::string& integrator);
+
 // Per scene and stiffness scale of the table, in the table's order. Only rows that ran to the
 // end ("ok") and carry an error count; the cheapest by `cost` wins, ties to the larger step.
 std::vector<Recommendation> recommend(const std::vector<SweepRow>& rows, double max_error,

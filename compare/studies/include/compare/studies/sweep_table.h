@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "compare/metrics/settled_quantities.h"
+
 namespace springcheck {
 
 // One run of the grid. `id` is its place in the full grid (stable across shards and resumes).
@@ -39,6 +41,9 @@ struct SweepRow {
   std::optional<double> precision_floor;     // m: a float32 engine's least round-off (empty: double)
   std::optional<double> energy_drift_max, energy_rise, max_strain;
   std::optional<double> linear_momentum_drift, angular_momentum_drift;
+  // The settled shape's quantities (settled_quantities.h), written "name=END:EARLIER;..." in the
+  // `quantities` column: what `springcheck trade` holds against the physical reference.
+  SettledQuantities quantities;
   std::string note;
 };
 

@@ -96,30 +96,18 @@ std::expected<TradeAxes, std::string> axesFor(const TradeOptions& o, const Engin
   return axes;
 }
 
-// Writes the grid's scenes and spec into `work`, runs the (remaining) cases into `table`.
+// Writes the grid into `work` and, unless --plan, runs its (remaining) cases into `table`.
 int runGrid(const TradeOptions& o, EngineRegistry& registry, const TradeGrid& grid,
             const std::string& work, const std::string& table) {
-  for (const TradeGridScene& s : grid.scenes) {
-    fs::create_directories(fs::path(work) / fs::path(s.file).parent_path());
-    if (auto ok = writeFileAtomically(work + "/" + s.file, [&](std::ostream& f) { f << s.text; }); !ok) {
-      std::cerr << "error: " << ok.error() << '\n';
+  if (o.plan_only) {
+    auto spec = writeTradeGrid(grid, work);
+    if (!spec) {
+      std::cerr << "error: " << spec.error() << '\n';
       return kFailure;
     }
-  }
-  const std::string spec_path = work + "/" + grid.spec_file;
-  if (auto ok = writeFileAtomically(spec_path, [&](std::ostream& f) { f << grid.spec_text; }); !ok) {
-    std::cerr << "error: " << ok.error() << '\n';
-    return kFailure;
-  }
-  if (o.plan_only) {
-    std::cout << "trade grid written: " << spec_path << " (run it with springcheck sweep, or on "
+    std::cout << "trade grid written: " << *spec << " (run it with springcheck sweep, or on "
               << "Slurm with examples/slurm/submit.sh; then springcheck trade ... --table TABLE)\n";
     return kOk;
-  }
-  auto spec = loadSweepSpec(spec_path, registry);
-  if (!spec) {
-    std::cerr << "error: " << spec.error() << '\n';
-    return kBadInput;
   }
   SweepOptions options{.jobs = o.jobs, .repeats = o.timing.repeats, .threads = o.timing.threads,
                        .fixed_threads = o.timing.fixed_threads, .resume = !o.fresh};
@@ -128,28 +116,14 @@ int runGrid(const TradeOptions& o, EngineRegistry& registry, const TradeGrid& gr
     std::cerr << "error: --shard: expected i/n with 0 <= i < n, got " << o.shard << '\n';
     return kBadInput;
   }
-  auto progress = std::make_shared<Progress>("trade " + spec->name, isatty(STDERR_FILENO));
+  auto progress = std::make_shared<Progress>("trade " + fs::path(o.scene).stem().string(),
+                                             isatty(STDERR_FILENO));
   options.progress = [progress](int done, int total) { progress->update(done, total); };
-  if (auto ran = runSweep(registry, *spec, table, options); !ran) {
+  if (auto ran = runTradeGrid(registry, grid, work, table, options); !ran) {
     std::cerr << "error: " << ran.error() << '\n';
     return kFailure;
   }
   return kOk;
-}
-
-// Each scene of the table that is a resolution of this scene (the grid's file NAME_r16.json, the
-// table's scene column its path) -> its resolution.
-std::map<std::string, int> resolutionsInTable(const std::vector<SweepRow>& rows,
-                                              const std::string& name) {
-  std::map<std::string, int> out;
-  const std::string prefix = name + "_r";
-  for (const SweepRow& row : rows) {
-    const std::string s = fs::path(row.c.scene).stem().string();
-    if (s.size() <= prefix.size() || s.compare(0, prefix.size(), prefix) != 0) continue;
-    const std::string digits = s.substr(prefix.size());
-    if (digits.find_first_not_of("0123456789") == std::string::npos) out[row.c.scene] = std::stoi(digits);
-  }
-  return out;
 }
 
 int writeAnswer(const TradeOptions& o, const TradeAnswer& a, const TradeReport& r) {
@@ -220,7 +194,7 @@ int trade(TradeOptions o) {
     std::cerr << "error: " << rows.error() << '\n';
     return kBadInput;
   }
-  TradeInputs in{*rows, resolutionsInTable(*rows, scene->name),
+  TradeInputs in{*rows, tradeResolutions(*rows, scene->name),
                  closedFormReference(*scene, mysim::buildModel(*scene), o.quantity), "mysim",
                  scene->integrator.name,
                  [&](const std::string& e) { const Engine* x = registry->find(e); return x && x->kind == "bullet"; }};

@@ -3,6 +3,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <mutex>
 #include <numbers>
 
 namespace springcheck {
@@ -133,7 +135,18 @@ ElasticaTip heavyElastica(double load) {
   return result;
 }
 
-double bendingLengthFromChord(double overhang, double chord_angle) {
+namespace {
+
+// The load whose elastica has this chord. Each costs 45 elastica solves (about 0.1 s), and one
+// run's metrics read the same chord several times (the reading, the closed form's, the settled
+// quantities'), so answers are kept: the same chord gives the same bits either way.
+double loadFromChord(double chord_angle) {
+  static std::mutex guard;
+  static std::map<double, double> known;
+  {
+    const std::lock_guard lock(guard);
+    if (auto it = known.find(chord_angle); it != known.end()) return it->second;
+  }
   // Chords up to 68 degrees on loads 1e-6 .. 30, steeper ones on 30 .. 1e4 (89.2 degrees).
   static const double steepest_bracketed = heavyElastica(kMaxElasticaLoad).chord_angle;
   double low = 1e-6, high = kMaxElasticaLoad;
@@ -142,7 +155,17 @@ double bendingLengthFromChord(double overhang, double chord_angle) {
     const double mid = std::sqrt(low * high);
     (heavyElastica(mid).chord_angle < chord_angle ? low : high) = mid;
   }
-  return overhang / std::cbrt(std::sqrt(low * high));
+  const double load = std::sqrt(low * high);
+  const std::lock_guard lock(guard);
+  if (known.size() > 4096) known.clear();  // a bound on memory; long studies read many chords
+  known[chord_angle] = load;
+  return load;
+}
+
+}  // namespace
+
+double bendingLengthFromChord(double overhang, double chord_angle) {
+  return overhang / std::cbrt(loadFromChord(chord_angle));
 }
 
 }  // namespace springcheck

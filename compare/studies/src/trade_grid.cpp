@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "compare/io/atomic_file.h"
 #include "mysim/json_input.h"
 
 namespace springcheck {
@@ -72,6 +74,50 @@ std::expected<TradeGrid, std::string> planTradeGrid(const std::string& scene_pat
   if (!axes.integrators.empty()) spec["integrators"] = axes.integrators;
   grid.spec_text = spec.dump(1);
   return grid;
+}
+
+std::expected<std::string, std::string> writeTradeGrid(const TradeGrid& grid,
+                                                       const std::string& work) {
+  namespace fs = std::filesystem;
+  auto write = [](const std::string& path, const std::string& text) {
+    std::error_code ec;
+    fs::create_directories(fs::path(path).parent_path(), ec);
+    return writeFileAtomically(path, [&](std::ostream& f) { f << text; });
+  };
+  for (const TradeGridScene& s : grid.scenes) {
+    if (auto ok = write(work + "/" + s.file, s.text); !ok) return std::unexpected(ok.error());
+  }
+  const std::string spec = work + "/" + grid.spec_file;
+  if (auto ok = write(spec, grid.spec_text); !ok) return std::unexpected(ok.error());
+  return spec;
+}
+
+std::expected<void, std::string> runTradeGrid(EngineRegistry& registry, const TradeGrid& grid,
+                                              const std::string& work, const std::string& table,
+                                              const SweepOptions& options) {
+  const auto spec_path = writeTradeGrid(grid, work);
+  if (!spec_path) return std::unexpected(spec_path.error());
+  auto spec = loadSweepSpec(*spec_path, registry);
+  if (!spec) return std::unexpected(spec.error());
+  auto ran = runSweep(registry, *spec, table, options);
+  if (!ran) return std::unexpected(ran.error());
+  return {};
+}
+
+std::map<std::string, int> tradeResolutions(const std::vector<SweepRow>& rows,
+                                            const std::string& name) {
+  std::map<std::string, int> out;
+  const std::string prefix = name + "_r";
+  for (const SweepRow& row : rows) {
+    const std::string s = std::filesystem::path(row.c.scene).stem().string();
+    if (s.size() <= prefix.size() || s.compare(0, prefix.size(), prefix) != 0) continue;
+    const std::string digits = s.substr(prefix.size());
+    if (!digits.empty() && digits.size() <= 6 &&
+        digits.find_first_not_of("0123456789") == std::string::npos) {
+      out[row.c.scene] = std::stoi(digits);
+    }
+  }
+  return out;
 }
 
 TradeAxes defaultTradeAxes(int resolution, double dt, const std::string& scene_integrator) {

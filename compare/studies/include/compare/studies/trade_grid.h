@@ -3,8 +3,11 @@
 // resolution, and the sweep spec that crosses them with engines, integrators and steps. The
 // sweep machinery runs it (sweep.h: parallel, resumable, sharded, on Slurm too).
 #include <expected>
+#include <map>
 #include <string>
 #include <vector>
+
+#include "compare/studies/sweep.h"
 
 namespace springcheck {
 
@@ -38,6 +41,23 @@ struct TradeGrid {
 [[nodiscard]] std::expected<TradeGrid, std::string> planTradeGrid(const std::string& scene_path,
                                                                   const std::string& scene_name,
                                                                   const TradeAxes& axes);
+
+// Writes the grid's scenes and spec into the folder `work` (the spec's path returned), ready for
+// `springcheck sweep` or Slurm (examples/slurm/submit.sh).
+[[nodiscard]] std::expected<std::string, std::string> writeTradeGrid(const TradeGrid& grid,
+                                                                     const std::string& work);
+// Writes the grid and runs its (remaining) cases into `table` (sweep.h's options: jobs, timing,
+// shard, resume).
+[[nodiscard]] std::expected<void, std::string> runTradeGrid(EngineRegistry& registry,
+                                                            const TradeGrid& grid,
+                                                            const std::string& work,
+                                                            const std::string& table,
+                                                            const SweepOptions& options);
+
+// Each scene of a grid table that is a resolution of the scene named `name` (the grid's file
+// NAME_r16.json; the table's scene column holds its path) -> its resolution.
+std::map<std::string, int> tradeResolutions(const std::vector<SweepRow>& rows,
+                                            const std::string& name);
 
 // Default axes for a scene whose own resolution is `resolution` and step `dt`: resolutions
 // r/4, r/2, r, 2r (at least 1; the limit needs three, the orders' agreement four); steps 8, 2

@@ -8,6 +8,7 @@ import energy_pages
 import missing_page
 import page_commands
 import performance_page
+import physical_trade_page
 import refine_pages
 import series_pages
 import stability_pages
@@ -29,6 +30,7 @@ def pages(ctx):
     result += energy_pages.pages(m)
     result += drape_pages.pages(m)
     result += refine_pages.pages(m)
+    result += physical_trade_page.pages(m)
     result += series_pages.pages(m)
     if m.get("bench"):
         result.append(performance_page.page(m["bench"]))

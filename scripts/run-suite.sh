@@ -93,6 +93,10 @@ stage refine $B refine scenes/material/cantilever_strip.json \
   scenes/material/cantilever_strip_flex.json scenes/material/cusick_drape.json \
   scenes/material/cable_catenary.json --resolutions 4,8,16 --engines mysim,bullet-implicit \
   --out "$OUT/refine" >/dev/null || [ $? -eq 3 ]
+# The trade against physical truth, small enough for the main job (6 s): the cheapest setup of
+# the cable's grid whose sag is within 1 % of the continuous elastic catenary (docs/trade.md).
+stage "trade cable_catenary" $B trade scenes/material/cable_catenary.json --quantity sag_lowest \
+  --max-error 0.01 --relative --fresh --out "$OUT/trade/cable_catenary" >/dev/null 2>&1
 
 # The timings so far (the report draws them on its last page), then the report's own.
 write_timings() {

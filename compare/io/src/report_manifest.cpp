@@ -132,6 +132,26 @@ std::expected<json, std::string> comparisons(const fs::path& results) {
   return list;
 }
 
+// The trade studies (springcheck trade) under results/trade: each folder's answer and table.
+json tradeStudies(const fs::path& results) {
+  json studies = json::array();
+  std::error_code ec;
+  std::vector<fs::path> answers;
+  for (const auto& entry : fs::directory_iterator(results / "trade", ec)) {
+    if (entry.is_directory() && fs::exists(entry.path() / "trade.json")) {
+      answers.push_back(entry.path() / "trade.json");
+    }
+  }
+  std::sort(answers.begin(), answers.end());
+  for (const fs::path& a : answers) {
+    const fs::path table = a.parent_path() / "trade.csv";
+    studies.push_back({{"answer", a.string()},
+                       {"table", table.string()},
+                       {"command", invocationBeside(table.string())}});
+  }
+  return studies;
+}
+
 }  // namespace
 
 std::expected<json, std::string> reportManifest(const std::string& results_dir,
@@ -260,6 +280,7 @@ std::expected<json, std::string> reportManifest(const std::string& results_dir,
             "convergence as the mesh is refined: the cantilever against the elastica, flex "
             "springs, the drape test");
   }
+  m["physical_trade"] = tradeStudies(results);
   m["headlines"] = reportHeadlines(m["comparisons"], m["stability"]["scenes"]);
   const fs::path bench = results / "bench" / "bench.json";
   m["bench"] = fs::exists(bench) ? json(bench.string()) : json();

@@ -7,37 +7,16 @@
 #include <cmath>
 #include <filesystem>
 
-#include "compare/engines/engine_registry.h"
 #include "compare/studies/refinement.h"
 #include "compare/studies/trade.h"
-#include "compare/studies/trade_grid.h"
-#include "mysim/scene_file.h"
+#include "trade_test_support.h"
 
 namespace springcheck {
 namespace {
 
-const std::string kStrip = std::string(SPRINGCHECK_SOURCE_DIR) + "/scenes/material/cantilever_strip.json";
+using test_support::tradeOver;
 
-// The trade of `scene` over `axes` (a grid run in a folder of its own, one case at a time), the
-// settling judged against a relative bound `bound`.
-TradeAnswer tradeOver(const std::string& scene, const TradeAxes& axes, const std::string& folder,
-                      double bound = 0.1) {
-  EngineRegistry registry;
-  const std::string work = testing::TempDir() + "/" + folder;
-  std::filesystem::remove_all(work);
-  const auto grid = planTradeGrid(scene, "strip", axes);
-  EXPECT_TRUE(grid) << grid.error();
-  const auto ran = runTradeGrid(registry, *grid, work, work + "/grid.csv", {.jobs = 1, .resume = false});
-  EXPECT_TRUE(ran) << ran.error();
-  const auto rows = readSweepTable(work + "/grid.csv");
-  EXPECT_TRUE(rows) << rows.error();
-  const auto loaded = registry.loadScene(scene);
-  EXPECT_TRUE(loaded) << loaded.error();
-  TradeInputs in{*rows, tradeResolutions(*rows, "strip"),
-                 closedFormReference(*loaded, mysim::buildModel(*loaded), "tip_drop"), "mysim",
-                 "backward-euler", nullptr};
-  return analyseTrade(in, {"tip_drop", bound, true, Cost::WallTime});
-}
+const std::string kStrip = std::string(SPRINGCHECK_SOURCE_DIR) + "/scenes/material/cantilever_strip.json";
 
 // Every setup's solver, temporal, spatial and model parts were measured and add up to its error
 // against the heavy elastica (each part a difference along one path of runs: a part taken from

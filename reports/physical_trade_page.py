@@ -11,14 +11,16 @@ PARTS = [("solver", "solver"), ("temporal", "temporal"), ("spatial", "spatial"),
 MARKERS = "os^vD<>PXh*"
 
 
-def short(setup):
+def short(setup, ms=False):
+    """'16 cells, mysim vbd, dt 0.004 s' (the scene's resolution: cells, rings or links)."""
     integrator = "" if setup["integrator"] == "-" else " " + setup["integrator"]
-    return f"{setup['resolution']} cells, {setup['engine']}{integrator}, dt {setup['dt']:g} s"
+    step = f"{1000 * setup['dt']:g} ms" if ms else f"dt {setup['dt']:g} s"
+    return f"resolution {setup['resolution']}, {setup['engine']}{integrator}, {step}"
 
 
 def title_of(a):
     bound = f"{100 * a['max_error']:g} %" if a["relative"] else f"{a['max_error']:g} {a['unit']}"
-    head = f"{a['scene']}: {a['quantity']} within {bound} of its reference"
+    head = f"{a['scene']}: {a['quantity']} within {bound}"
     r = a.get("recommended")
     if not a["reference"]["value"]:
         return f"{head}? No reference ({a['reference']['reason']})"
@@ -26,7 +28,7 @@ def title_of(a):
         c = a.get("closest")
         return f"{head}? No setup of the grid" + (f"; closest {short(c)}" if c else "")
     rel = abs(r["relative_error"]) * 100 if r["relative_error"] is not None else float("nan")
-    return f"{head}: {short(r)}, {rel:.2g} % in {r['wall_seconds']:.2g} s"
+    return f"{head}: {short(r, ms=True)}, {rel:.2g} % in {r['wall_seconds']:.2g} s"
 
 
 def draw_front(ax, a, rows):
@@ -56,10 +58,11 @@ def draw_front(ax, a, rows):
 def draw_budgets(ax, a):
     chosen = []
     if a.get("recommended"):
-        chosen.append((f"recommended ({a['recommended']['family']})", a["recommended"]))
+        chosen.append((f"recommended\n{a['recommended']['family']}", a["recommended"]))
     for s in a.get("family_best", []):
         if not a.get("recommended") or short(s) != short(a["recommended"]):
             chosen.append((s["family"], s))
+    low = high = 0.0
     for x, (label, s) in enumerate(chosen):
         up = down = 0.0
         for k, (part, name) in enumerate(PARTS):
@@ -71,9 +74,11 @@ def draw_budgets(ax, a):
             else:
                 down += v
         ax.plot([x - 0.4, x + 0.4], [s["physical_error"]] * 2, "k-", lw=1.5)
+        low, high = min(low, down, s["physical_error"]), max(high, up, s["physical_error"])
     ax.axhline(0, color="0.5", lw=0.5)
-    ax.margins(y=0.1)
-    ax.set_xticks(range(len(chosen)), [c[0] for c in chosen], rotation=30, fontsize=7, ha="right")
+    pad = 0.1 * (high - low) or 1e-12
+    ax.set_ylim(low - pad, high + pad)
+    ax.set_xticks(range(len(chosen)), [c[0] for c in chosen], fontsize=6)
     ax.set_ylabel(f"signed error part, {a['unit']}")
     if chosen:
         ax.legend(fontsize=6)

@@ -38,10 +38,11 @@ TEST(ErrorBudget, ThePartsAddUpToThePhysicalError) {
   EXPECT_GE(checked, 8);
 }
 
-// Resolution: the spatial part at 4 cells against 8 shrinks as the limit's own order (fitted on
-// 8, 16, 32) says, within 15 % (the 4-cell strip is the furthest from the asymptotic range).
+// Resolution: the spatial part at 2 cells against 4 shrinks as the limit's own order (fitted on
+// 4, 8, 16) says, within 15 % (the 2-cell strip is the furthest from the asymptotic range;
+// measured 4.5 against 4.3). 32 cells would make this the slowest test under the sanitizers.
 TEST(ErrorBudget, TheSpatialPartShrinksAtTheObservedOrder) {
-  const TradeAnswer a = tradeOver(kStrip, {{4, 8, 16, 32}, {"mysim"}, {"backward-euler"}, {0.008}},
+  const TradeAnswer a = tradeOver(kStrip, {{2, 4, 8, 16}, {"mysim"}, {"backward-euler"}, {0.008}},
                                   "budget_spatial");
   ASSERT_TRUE(a.limits.size() == 1 && a.limits[0].limit.order);
   const double p = *a.limits[0].limit.order;

@@ -30,6 +30,8 @@ int exitCodeForStatus(const std::string& status);
 void addEnginesFileOption(CLI::App* command, std::vector<std::string>& files);
 // The built-in registry plus those files; on a bad file prints the error and returns nothing.
 std::optional<EngineRegistry> makeRegistry(const std::vector<std::string>& files);
+// --shard i/n (sweep, trade): false after saying what was expected.
+bool parseShard(const std::string& text, int& index, int& count);
 // The exit code for an engine that did not run.
 int exitCodeFor(const EngineError& error);
 

@@ -1,3 +1,4 @@
+#include <cstdio>
 #include <iostream>
 
 #include "commands.h"
@@ -57,6 +58,15 @@ int exitCodeForStatus(const std::string& status) {
   if (status == "ok") return kOk;
   if (status == "blowup") return kBlowUp;
   return kSolverLimit;
+}
+
+bool parseShard(const std::string& text, int& index, int& count) {
+  if (std::sscanf(text.c_str(), "%d/%d", &index, &count) != 2 || count < 1 || index < 0 ||
+      index >= count) {
+    std::cerr << "error: --shard: expected i/n with 0 <= i < n, got " << text << '\n';
+    return false;
+  }
+  return true;
 }
 
 int exitCodeFor(const EngineError& error) {

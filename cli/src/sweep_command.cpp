@@ -35,12 +35,7 @@ int sweep(const SweepCommandOptions& o) {
   }
   SweepOptions options;
   options.jobs = o.jobs;
-  if (std::sscanf(o.shard.c_str(), "%d/%d", &options.shard_index, &options.shard_count) != 2 ||
-      options.shard_count < 1 || options.shard_index < 0 ||
-      options.shard_index >= options.shard_count) {
-    std::cerr << "error: --shard: expected i/n with 0 <= i < n, got " << o.shard << '\n';
-    return kBadInput;
-  }
+  if (!parseShard(o.shard, options.shard_index, options.shard_count)) return kBadInput;
   options.resume = !o.fresh;
   options.repeats = o.timing.repeats;
   options.fixed_threads = o.timing.fixed_threads;

@@ -111,11 +111,7 @@ int runGrid(const TradeOptions& o, EngineRegistry& registry, const TradeGrid& gr
   }
   SweepOptions options{.jobs = o.jobs, .repeats = o.timing.repeats, .threads = o.timing.threads,
                        .fixed_threads = o.timing.fixed_threads, .resume = !o.fresh};
-  if (std::sscanf(o.shard.c_str(), "%d/%d", &options.shard_index, &options.shard_count) != 2 ||
-      options.shard_count < 1 || options.shard_index < 0 || options.shard_index >= options.shard_count) {
-    std::cerr << "error: --shard: expected i/n with 0 <= i < n, got " << o.shard << '\n';
-    return kBadInput;
-  }
+  if (!parseShard(o.shard, options.shard_index, options.shard_count)) return kBadInput;
   auto progress = std::make_shared<Progress>("trade " + fs::path(o.scene).stem().string(),
                                              isatty(STDERR_FILENO));
   options.progress = [progress](int done, int total) { progress->update(done, total); };

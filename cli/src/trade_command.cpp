@@ -12,6 +12,7 @@
 #include "compare/io/progress.h"
 #include "compare/io/whole_folder.h"
 #include "compare/metrics/run_metrics.h"
+#include "compare/studies/ablation.h"
 #include "compare/studies/sweep.h"
 #include "compare/studies/trade.h"
 #include "compare/studies/trade_grid.h"
@@ -35,7 +36,7 @@ struct TradeOptions {
   std::vector<double> dts;
   int jobs = 1;
   std::string shard = "0/1";
-  bool fresh = false, plan_only = false;
+  bool fresh = false, plan_only = false, ablate = false;
   std::vector<std::string> engines_files;
   Timing timing;
 };
@@ -122,10 +123,13 @@ int runGrid(const TradeOptions& o, EngineRegistry& registry, const TradeGrid& gr
   return kOk;
 }
 
-int writeAnswer(const TradeOptions& o, const TradeAnswer& a, const TradeReport& r) {
+int writeAnswer(const TradeOptions& o, const TradeAnswer& a, const TradeReport& r,
+                const nlohmann::json& ablation) {
   static const FolderKind kind{"trade folder", {"trade.csv", "trade.json", "trade.csv.command"}};
   const std::string csv = tradeTableCsv(a);
-  const std::string answer = jsonText(tradeJson(a, r), 2) + "\n";
+  nlohmann::json body = tradeJson(a, r);
+  body["ablation"] = ablation;
+  const std::string answer = jsonText(body, 2) + "\n";
   auto written = writeFolderWhole(o.out, kind, [&](const std::string& staging)
                                                    -> std::expected<void, std::string> {
     if (auto ok = writeFileAtomically(staging + "/trade.csv", [&](std::ostream& f) { f << csv; }); !ok) {
@@ -145,6 +149,35 @@ int writeAnswer(const TradeOptions& o, const TradeAnswer& a, const TradeReport& 
     return kFailure;
   }
   return kOk;
+}
+
+// With --ablate: the recommended setup (else the closest) with each model term taken out.
+std::expected<nlohmann::json, std::string> ablationOf(const TradeOptions& o,
+                                                      const EngineRegistry& registry,
+                                                      const TradeAnswer& a) {
+  const std::optional<std::size_t> at = a.recommended ? a.recommended : a.closest;
+  if (!o.ablate || !at || !a.reference.value) return nullptr;
+  auto found = ablate(registry, o.scene, a.setups[*at], o.quantity, *a.reference.value, a.bound);
+  if (!found) return std::unexpected(found.error());
+  printAblation(*found, describeSetup(a.setups[*at], a));
+  return ablationJson(*found);
+}
+
+int answer(const TradeOptions& o, const EngineRegistry& registry, const std::string& scene,
+           const TradeInputs& in) {
+  const TradeQuestion question{o.quantity, o.max_error, o.relative,
+                               o.cost == "work" ? Cost::Work : Cost::WallTime};
+  const TradeAnswer a = analyseTrade(in, question);
+  const TradeReport report{scene, o.quantity, findMetric(o.quantity)->unit, question,
+                           o.out + "/trade.csv"};
+  printTradeAnswer(a, report);
+  const auto ablation = ablationOf(o, registry, a);
+  if (!ablation) {
+    std::cerr << "error: " << ablation.error() << '\n';
+    return kBadInput;
+  }
+  if (int code = writeAnswer(o, a, report, *ablation); code != kOk) return code;
+  return a.recommended ? kOk : kFailure;
 }
 
 int trade(TradeOptions o) {
@@ -198,14 +231,7 @@ int trade(TradeOptions o) {
     std::cerr << "error: " << table << ": no rows of " << scene->name << " at any resolution\n";
     return kBadInput;
   }
-  const TradeQuestion question{o.quantity, o.max_error, o.relative,
-                               o.cost == "work" ? Cost::Work : Cost::WallTime};
-  const TradeAnswer answer = analyseTrade(in, question);
-  const TradeReport report{scene->name, o.quantity, findMetric(o.quantity)->unit, question,
-                           o.out + "/trade.csv"};
-  printTradeAnswer(answer, report);
-  if (int code = writeAnswer(o, answer, report); code != kOk) return code;
-  return answer.recommended ? kOk : kFailure;
+  return answer(o, *registry, scene->name, in);
 }
 
 }  // namespace
@@ -248,6 +274,9 @@ void addTradeCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--shard", o->shard, "Run only the grid's cases with id % n == i, as i/n")
       ->capture_default_str();
   cmd->add_flag("--fresh", o->fresh, "Start the grid over instead of resuming it");
+  cmd->add_flag("--ablate", o->ablate,
+                "Then rerun the recommended setup with each model term taken out (bending, "
+                "damping, drag, wind, driven pins, colliders): each term's effect against the bound");
   cmd->add_flag("--plan", o->plan_only, "Write the grid (scenes and sweep spec) and stop");
   cmd->add_option("--table", o->table, "Answer from this grid table (a merged sweep of the plan)");
   cmd->add_option("--out", o->out, "Output folder (default out/trade/NAME; the grid in OUT.grid)");

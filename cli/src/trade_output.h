@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "compare/studies/ablation.h"
 #include "compare/studies/trade.h"
 
 namespace springcheck {
@@ -17,5 +18,8 @@ struct TradeReport {
 std::string tradeTableCsv(const TradeAnswer& a);
 nlohmann::json tradeJson(const TradeAnswer& a, const TradeReport& r);
 void printTradeAnswer(const TradeAnswer& a, const TradeReport& r);
+// The ablation at `where` (the setup's description): each term's change, and what can go.
+void printAblation(const Ablation& a, const std::string& where);
+nlohmann::json ablationJson(const Ablation& a);
 
 }  // namespace springcheck

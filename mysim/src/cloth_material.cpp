@@ -8,7 +8,15 @@
 namespace mysim {
 
 const char* bendingModelName(BendingModel model) {
-  return model == BendingModel::Hinge ? "hinge" : "flex";
+  switch (model) {
+    case BendingModel::Hinge:
+      return "hinge";
+    case BendingModel::Flex:
+      return "flex";
+    case BendingModel::None:
+      break;
+  }
+  return "none";
 }
 
 MaterialGrid materialGrid(double width, double height, int resolution, bool clamped) {

@@ -166,8 +166,10 @@ ClothMaterial readClothMaterial(FieldReader& r, bool mesh) {
   } else if (model == "flex") {
     m.bending = BendingModel::Flex;
     m.flex_stiffness = bending.positive("stiffness");
+  } else if (model == "none") {
+    m.bending = BendingModel::None;
   } else {
-    failField(bending.field("model"), "\"hinge\" or \"flex\"", bending.raw("model"));
+    failField(bending.field("model"), "\"hinge\", \"flex\" or \"none\"", bending.raw("model"));
   }
   bending.refuseUnknown("docs/materials.md");
   r.refuseUnknown("docs/materials.md");

@@ -9,6 +9,7 @@ namespace mysim {
 enum class BendingModel {
   Hinge,  // hinge bending (hinge.h) from the rigidity: converges as the mesh is refined
   Flex,   // skip-one springs of a fixed per-spring stiffness: what most cloth codes do
+  None,   // no bending energy: a membrane (what an ablation takes bending out to)
 };
 const char* bendingModelName(BendingModel model);
 

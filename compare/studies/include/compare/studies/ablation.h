@@ -1,0 +1,41 @@
+#pragma once
+// Model only what a scene requires (docs/trade.md, "Ablation"): the setup a trade recommends,
+// rerun with each model term the scene carries taken out (bending, material damping, drag, wind,
+// colliders, driven pins), each term's effect on the settled quantity against the bound, and the
+// cheapest model that stays within it.
+#include <expected>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compare/engines/engine_registry.h"
+#include "compare/studies/trade.h"
+
+namespace springcheck {
+
+struct AblationRun {
+  std::string term;         // "" for the scene as written; "a+b" for terms taken out together
+  std::string description;  // what taking it out means
+  std::string status;       // the run's (ok, blowup, refused, ...)
+  std::optional<double> value, drift;
+  bool settled = false;
+  double wall_seconds = 0.0;
+  // |value - reference| <= bound, settled: the model without the term still answers
+  bool within = false;
+};
+
+struct Ablation {
+  AblationRun full;                  // the scene as written, at the setup
+  std::vector<AblationRun> without;  // each term present, taken out alone
+  std::optional<AblationRun> cheapest;  // every term that can go, taken out together
+};
+
+// At `setup` (its resolution, engine, integrator and step) of the material scene at `path`;
+// `reference` and `bound` (absolute) from the trade's answer.
+[[nodiscard]] std::expected<Ablation, std::string> ablate(const EngineRegistry& registry,
+                                                          const std::string& path,
+                                                          const TradeSetup& setup,
+                                                          const std::string& quantity,
+                                                          double reference, double bound);
+
+}  // namespace springcheck

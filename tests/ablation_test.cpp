@@ -36,15 +36,20 @@ TradeSetup setup(int resolution, const std::string& integrator, double dt) {
 // The shipped cable with a ground plane 10 m below it, which it never reaches: taking the
 // collider out changes the sag by nothing at all, so it can go; taking the damping out leaves a
 // cable that swings on and does not settle, so it cannot.
-TEST(Ablation, AColliderTheClothNeverReachesDoesNotMatter) {
+std::expected<Ablation, std::string> ablateCableOverGround(const nlohmann::json& needs) {
   std::ifstream in(kScenes + "cable_catenary.json");
   nlohmann::json scene = nlohmann::json::parse(in);
   scene["colliders"] = {{{"type", "plane"}, {"point", {0, -10, 0}}, {"normal", {0, 1, 0}}}};
+  if (!needs.is_null()) scene["needs"] = needs;
   const std::string path = testing::TempDir() + "/cable_over_ground.json";
   std::ofstream(path) << scene.dump();
   const double sag = levelElasticCatenary(1.0, 1.0, 0.05 * 9.8, 50.0).midspan_sag;
-  const auto a = ablate(EngineRegistry(), path, setup(10, "backward-euler", 0.004), "sag_lowest",
-                        sag, 0.01 * sag);
+  return ablate(EngineRegistry(), path, setup(10, "backward-euler", 0.004), "sag_lowest", sag,
+                0.01 * sag);
+}
+
+TEST(Ablation, AColliderTheClothNeverReachesDoesNotMatter) {
+  const auto a = ablateCableOverGround(nullptr);
   ASSERT_TRUE(a) << a.error();
   ASSERT_TRUE(a->full.within) << a->full.status;
   const AblationRun* ground = without(*a, "colliders");
@@ -56,6 +61,19 @@ TEST(Ablation, AColliderTheClothNeverReachesDoesNotMatter) {
   EXPECT_FALSE(damping->settled);
   ASSERT_TRUE(a->cheapest);
   EXPECT_EQ(a->cheapest->term, "colliders");
+}
+
+// The same scene declaring it needs its ground (`needs`, model_terms.h): the ablation still
+// measures that the ground changes nothing, but keeps it, so no cheaper model is proposed.
+TEST(Ablation, ATermTheSceneDeclaresIsKept) {
+  const auto a = ablateCableOverGround(nlohmann::json::array({"colliders"}));
+  ASSERT_TRUE(a) << a.error();
+  const AblationRun* ground = without(*a, "colliders");
+  ASSERT_TRUE(ground);
+  EXPECT_TRUE(ground->within);
+  EXPECT_TRUE(ground->declared);
+  EXPECT_FALSE(without(*a, "damping")->declared);
+  EXPECT_FALSE(a->cheapest) << a->cheapest->term;
 }
 
 // The shipped cantilever without bending hangs from its clamp as a membrane: its tip drops far

@@ -80,6 +80,17 @@ INSTANTIATE_TEST_SUITE_P(
                 "system.type", "missing"},
         BadCase{"MissingStep", [] { return without(validCloth(), "/integrator", "dt"); },
                 "integrator.dt", "missing"},
+        BadCase{"NeedsAnUnknownTerm",
+                [] { return with(validCloth(), "/needs"_json_pointer, json::array({"bendin"})); },
+                "needs[0]", "expected one of bending, damping"},
+        BadCase{"NeedsGravityWhichNoAblationTakesOut",
+                [] {
+                  return with(validCloth(), "/needs"_json_pointer, json::array({"gravity", "wind"}));
+                },
+                "needs[0]", "unknown model term"},
+        BadCase{"NeedsWindWithoutWind",
+                [] { return with(validCloth(), "/needs"_json_pointer, json::array({"wind"})); },
+                "needs[0]", "the scene does not carry it"},
         BadCase{"MistypedRows", [] { return with(validCloth(), "/system/rows"_json_pointer, "4"); },
                 "system.rows", "expected an integer"},
         BadCase{"NanAsString",

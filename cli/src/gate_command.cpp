@@ -7,10 +7,31 @@
 #include "commands.h"
 #include "compare/io/atomic_file.h"
 #include "compare/studies/gate.h"
+#include "compare/studies/gate_ablation.h"
 #include "compare/studies/gate_report_formats.h"
 #include "data_dir.h"
 
 namespace springcheck {
+namespace {
+
+// gate --ablate: prints each term's effect, warns of those the scenes carry but do not need.
+bool warnOfUnneededTerms(const EngineRegistry& registry, const GateReport& report) {
+  const auto effects = ablateGate(registry, report);
+  if (!effects) {
+    std::cerr << "error: --ablate: " << effects.error() << '\n';
+    return false;
+  }
+  printGateAblation(std::cout, *effects);
+  for (const GateTermEffect& e : *effects) {
+    if (!e.droppable()) continue;
+    std::cerr << "warning: " << e.scene << " carries " << e.term << " but every gated check "
+              << "holds without it, within its bound; drop it, or declare it in the scene's "
+              << "\"needs\" (docs/trade.md)\n";
+  }
+  return true;
+}
+
+}  // namespace
 
 void addGateCommand(CLI::App& app, int& exit_code) {
   auto path = std::make_shared<std::string>(dataFile("compare/tolerances.json"));
@@ -18,6 +39,7 @@ void addGateCommand(CLI::App& app, int& exit_code) {
   auto junit_out = std::make_shared<std::string>();
   auto markdown_out = std::make_shared<std::string>();
   auto engines_files = std::make_shared<std::vector<std::string>>();
+  auto ablate = std::make_shared<bool>(false);
   CLI::App* cmd = app.add_subcommand("gate", "Check every bound of a tolerances file");
   cmd->add_option("--tolerances", *path, "Tolerances file")->capture_default_str();
   cmd->add_option("--json", *json_out, "Also write every check's result to this JSON file");
@@ -26,8 +48,12 @@ void addGateCommand(CLI::App& app, int& exit_code) {
                   "measured value, the bound and its reason (for CI systems)");
   cmd->add_option("--markdown", *markdown_out,
                   "Also write a markdown table here (failures first), for a pull-request comment");
+  cmd->add_flag("--ablate", *ablate,
+                "Then rerun each scene with each model term it carries taken out and warn of a "
+                "term no check needs (every check still passes, each within its bound) that the "
+                "scene's \"needs\" do not declare (docs/trade.md)");
   addEnginesFileOption(cmd, *engines_files);
-  cmd->callback([path, json_out, junit_out, markdown_out, engines_files, &exit_code] {
+  cmd->callback([path, json_out, junit_out, markdown_out, engines_files, ablate, &exit_code] {
     std::optional<EngineRegistry> registry = makeRegistry(*engines_files);
     if (!registry) {
       exit_code = kBadInput;
@@ -61,6 +87,7 @@ void addGateCommand(CLI::App& app, int& exit_code) {
       }
     }
     exit_code = report.passed() ? kOk : kFailure;
+    if (*ablate && !warnOfUnneededTerms(*registry, report)) exit_code = kBadInput;
   });
 }
 

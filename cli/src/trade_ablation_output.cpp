@@ -19,6 +19,7 @@ json runJson(const AblationRun& r, const AblationRun& full) {
           {"change", both ? json(*r.value - *full.value) : json(nullptr)},
           {"settled", r.settled},
           {"within_bound", r.within},
+          {"declared_needed", r.declared},
           {"wall_seconds", r.wall_seconds}};
 }
 
@@ -31,7 +32,7 @@ void printRun(const AblationRun& r, const AblationRun& full) {
   std::cout << "changes it by " << formatNumber(*r.value - full.value.value_or(NAN), 3) << " ("
             << (r.within ? "still within the bound" : r.settled ? "outside the bound"
                                                                 : "does not settle")
-            << "), " << formatNumber(r.wall_seconds, 3) << " s against "
+            << (r.declared ? "; the scene's needs declare it: kept" : "") << "), " << formatNumber(r.wall_seconds, 3) << " s against "
             << formatNumber(full.wall_seconds, 3) << " s\n";
 }
 
@@ -41,6 +42,13 @@ void printAblation(const Ablation& a, const std::string& where) {
   std::cout << "  ablation at " << where << ":\n";
   for (const AblationRun& r : a.without) printRun(r, a.full);
   if (a.without.empty()) std::cout << "    the scene carries none of the terms an ablation takes out\n";
+  for (const AblationRun& r : a.without) {
+    if (r.within && !r.declared) {
+      std::cerr << "warning: the scene carries " << r.term << " but the quantity stays within the "
+                << "bound without it; drop it, or declare it in the scene's \"needs\" "
+                << "(docs/trade.md)\n";
+    }
+  }
   if (a.cheapest) {
     std::cout << "  the cheapest model within the bound: without " << a.cheapest->term << ", "
               << (a.cheapest->within ? "within" : "NOT within (the terms interact)") << ", "

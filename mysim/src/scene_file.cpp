@@ -8,6 +8,7 @@
 
 #include "mysim/cloth_material.h"
 #include "mysim/json_input.h"
+#include "mysim/model_terms.h"
 #include "mysim/run_limits.h"
 #include "scene_system_readers.h"
 
@@ -201,6 +202,25 @@ void applyMaterialForces(Scene& scene) {
   }
 }
 
+// The model terms the scene declares it needs (model_terms.h): each one the catalogue knows and
+// the scene carries, so an ablation keeps them without a warning.
+std::vector<std::string> readNeeds(FieldReader& top, const json& root) {
+  std::vector<std::string> needs = top.textList("needs");
+  for (std::size_t k = 0; k < needs.size(); ++k) {
+    const std::string field = "needs[" + std::to_string(k) + "]";
+    const ModelTerm* term = findModelTerm(needs[k]);
+    if (!term) {
+      throw FieldError{field, "unknown model term '" + clip(needs[k], 40) + "'; expected one of " +
+                                  modelTermNames()};
+    }
+    if (!term->present(root)) {
+      throw FieldError{field, "'" + needs[k] + "': the scene does not carry it (" +
+                                  term->description + " is what taking it out would mean)"};
+    }
+  }
+  return needs;
+}
+
 Scene readScene(const json& root, const std::string& source,
                 const std::vector<EngineSection>& sections) {
   Scene scene;
@@ -213,6 +233,7 @@ Scene readScene(const json& root, const std::string& source,
               top.raw("name"));
   }
   scene.description = top.text("description", "");
+  if (top.has("needs")) scene.needed_terms = readNeeds(top, root);
 
   readSystem(top, scene);
 

@@ -1,6 +1,7 @@
 #include "compare/studies/gate.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -16,9 +17,7 @@ bool GateReport::passed() const {
   return std::all_of(results.begin(), results.end(), [](const CheckResult& r) { return r.passed; });
 }
 
-namespace {
-
-CheckResult evaluate(const ToleranceCheck& check, const Comparison& c) {
+CheckResult evaluateCheck(const ToleranceCheck& check, const Comparison& c) {
   CheckResult r{check, std::nullopt, false, "", "", {}, ""};
   if (const MetricInfo* info = findMetric(check.metric)) r.unit = info->unit;
   for (const std::string& engine : check.engines) {
@@ -82,11 +81,17 @@ CheckResult evaluate(const ToleranceCheck& check, const Comparison& c) {
     r.problem = "metric '" + check.metric + "' is not defined for this scene";
     return r;
   }
+  if (!check.physical_error.empty()) {  // the metric against its closed form
+    const double error = std::abs(*r.measured - check.reference);
+    const bool relative = check.physical_error == "relative";
+    r.note = check.metric + " " + formatNumber(*r.measured, 6) + " against the physical " +
+             formatNumber(check.reference, 6) + (r.note.empty() ? "" : "; " + r.note);
+    r.measured = relative ? error / std::abs(check.reference) : error;
+    if (relative) r.unit = "rel";
+  }
   r.passed = *r.measured <= check.bound;
   return r;
 }
-
-}  // namespace
 
 namespace {
 
@@ -110,27 +115,28 @@ std::expected<GateReport, std::string> runGate(const EngineRegistry& registry,
   std::map<std::string, std::vector<std::string>> engines;
   std::vector<std::string> scenes;
   for (const ToleranceCheck& check : tolerances.checks) {
-    if (!engines.count(check.scene)) scenes.push_back(check.scene);
-    auto& list = engines[check.scene];
+    if (!engines.count(check.sceneKey())) scenes.push_back(check.sceneKey());
+    auto& list = engines[check.sceneKey()];
     for (const std::string& e : check.engines) {
       if (std::find(list.begin(), list.end(), e) == list.end()) list.push_back(e);
     }
   }
   GateReport report;
   std::map<std::string, Comparison> comparisons;
-  for (const std::string& path : scenes) {
+  for (const std::string& key : scenes) {
+    // A variant's key is no file name, so only the scenes as written are found in `done`.
     std::error_code ec;
-    const auto cached = done.find(std::filesystem::weakly_canonical(path, ec).string());
-    if (cached != done.end() && covers(cached->second, engines[path])) {
-      comparisons.emplace(path, cached->second);
+    const auto cached = done.find(std::filesystem::weakly_canonical(key, ec).string());
+    if (cached != done.end() && covers(cached->second, engines[key])) {
+      comparisons.emplace(key, cached->second);
       continue;
     }
-    auto comparison = compareScene(registry, tolerances.scenes.at(path), engines[path]);
-    if (!comparison) return std::unexpected(path + ": " + comparison.error());
-    comparisons.emplace(path, std::move(*comparison));
+    auto comparison = compareScene(registry, tolerances.scenes.at(key), engines[key]);
+    if (!comparison) return std::unexpected(key + ": " + comparison.error());
+    comparisons.emplace(key, std::move(*comparison));
   }
   for (const ToleranceCheck& check : tolerances.checks) {
-    report.results.push_back(evaluate(check, comparisons.at(check.scene)));
+    report.results.push_back(evaluateCheck(check, comparisons.at(check.sceneKey())));
   }
   return report;
 }
@@ -141,15 +147,16 @@ void printGate(std::ostream& out, const GateReport& report) {
   for (const CheckResult& r : report.results) {
     std::string engines = r.check.engines[0];
     if (r.check.engines.size() > 1) engines += " ~ " + r.check.engines[1];
-    std::string scene = r.check.scene.substr(r.check.scene.find_last_of('/') + 1);
+    std::string scene =
+        r.check.scene.substr(r.check.scene.find_last_of('/') + 1) + r.check.variantLabel();
     if (r.measured) {
       const std::string& unit = r.unit;
       std::snprintf(line, sizeof line, "%s  %-22s %-20s %-44s %11.4g <= %-11.4g %s",
-                    r.passed ? "PASS" : "FAIL", scene.c_str(), r.check.metric.c_str(),
+                    r.passed ? "PASS" : "FAIL", scene.c_str(), r.check.metricLabel().c_str(),
                     engines.c_str(), *r.measured, r.check.bound, unit.c_str());
     } else {
       std::snprintf(line, sizeof line, "FAIL  %-22s %-20s %-44s %s", scene.c_str(),
-                    r.check.metric.c_str(), engines.c_str(), r.problem.c_str());
+                    r.check.metricLabel().c_str(), engines.c_str(), r.problem.c_str());
     }
     out << line << "\n      why: " << r.check.why << '\n';
     if (!r.note.empty()) out << "      note: " << r.note << '\n';

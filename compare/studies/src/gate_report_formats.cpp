@@ -55,7 +55,7 @@ std::string engines(const ToleranceCheck& check) {
 }
 
 std::string sceneName(const ToleranceCheck& check) {
-  return std::filesystem::path(check.scene).stem().string();
+  return std::filesystem::path(check.scene).stem().string() + check.variantLabel();
 }
 
 // Why a check failed, in one line: what was measured against what, or why nothing was.
@@ -67,7 +67,7 @@ std::string failureMessage(const CheckResult& r) {
 }  // namespace
 
 std::string checkName(const ToleranceCheck& check) {
-  return sceneName(check) + ": " + check.metric + " of " + engines(check) +
+  return sceneName(check) + ": " + check.metricLabel() + " of " + engines(check) +
          " <= " + numberText(check.bound);
 }
 
@@ -94,7 +94,7 @@ void writeJunit(std::ostream& out, const GateReport& report, const std::string& 
     out << ">\n      <failure message=\"" << xmlEscaped(failureMessage(r)) << "\" type=\""
         << (r.measured ? "bound" : "no-measurement") << "\">"
         << xmlEscaped(failureMessage(r) + "\nscene: " + r.check.scene +
-                      "\nengines: " + engines(r.check) + "\nmetric: " + r.check.metric +
+                      "\nengines: " + engines(r.check) + "\nmetric: " + r.check.metricLabel() +
                       "\nwhy this bound: " + r.check.why)
         << "</failure>\n    </testcase>\n";
   }
@@ -118,7 +118,7 @@ void writeGateMarkdown(std::ostream& out, const GateReport& report, const std::s
   };
   for (const CheckResult* r : rows) {
     out << "| " << (r->passed ? "pass" : "**FAIL**") << " | " << cell(sceneName(r->check)) << " | "
-        << cell(r->check.metric) << " | " << cell(engines(r->check)) << " | "
+        << cell(r->check.metricLabel()) << " | " << cell(engines(r->check)) << " | "
         << (r->measured ? numberText(*r->measured) : cell(r->problem)) << " | "
         << numberText(r->check.bound) << " |\n";
   }
@@ -130,6 +130,13 @@ void writeGateJson(std::ostream& out, const GateReport& report, const std::strin
     results.push_back({{"scene", r.check.scene},
                        {"engines", r.check.engines},
                        {"metric", r.check.metric},
+                       {"resolution", r.check.resolution ? nlohmann::json(*r.check.resolution)
+                                                         : nlohmann::json()},
+                       {"dt", r.check.dt ? nlohmann::json(*r.check.dt) : nlohmann::json()},
+                       {"physical_error", r.check.physical_error},
+                       {"reference", r.check.physical_error.empty()
+                                         ? nlohmann::json()
+                                         : nlohmann::json(r.check.reference)},
                        {"bound", r.check.bound},
                        {"why", r.check.why},
                        {"passed", r.passed},

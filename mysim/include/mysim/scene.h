@@ -47,6 +47,7 @@ struct Scene {
   std::string name;
   std::string description;
   std::string source;  // file it came from, for messages
+  std::vector<std::string> needed_terms;  // `needs`: model terms it declares (model_terms.h)
 
   SystemKind kind = SystemKind::Cloth;
   Eigen::Vector2d circle_start{1.0, 0.0};

@@ -2,7 +2,7 @@
 // Model only what a scene requires (docs/trade.md, "Ablation"): the setup a trade recommends,
 // rerun with each model term the scene carries taken out (bending, material damping, drag, wind,
 // colliders, driven pins), each term's effect on the settled quantity against the bound, and the
-// cheapest model that stays within it.
+// cheapest model that stays within it. The terms come from mysim's catalogue (model_terms.h).
 #include <expected>
 #include <optional>
 #include <string>
@@ -22,12 +22,15 @@ struct AblationRun {
   double wall_seconds = 0.0;
   // |value - reference| <= bound, settled: the model without the term still answers
   bool within = false;
+  bool declared = false;  // the scene's `needs` name the term: kept whatever it measures
 };
 
 struct Ablation {
   AblationRun full;                  // the scene as written, at the setup
   std::vector<AblationRun> without;  // each term present, taken out alone
-  std::optional<AblationRun> cheapest;  // every term that can go, taken out together
+  // Every term that can go (within the bound without it, not declared in `needs`), taken out
+  // together: the cheapest model. Its terms are the ones the scene carries but does not need.
+  std::optional<AblationRun> cheapest;
 };
 
 // At `setup` (its resolution, engine, integrator and step) of the material scene at `path`;

@@ -28,6 +28,9 @@ struct GateReport {
   bool passed() const;
 };
 
+// One check against the comparison of its scene (which ran every engine the check names).
+CheckResult evaluateCheck(const ToleranceCheck& check, const Comparison& comparison);
+
 // Comparisons already run, by scene file (as std::filesystem::weakly_canonical names it).
 using ComparisonCache = std::map<std::string, Comparison>;
 

@@ -146,10 +146,11 @@ const std::vector<MetricInfo>& metricCatalog() {
        [](E m) { return m.drape_folds; }, nullptr, true},
       {"sag_free_middle", false, "m", "middle of the free edge below the pins at the end",
        [](E m) { return m.sag_free_middle; }},
+      // Undefined without a collider: 0 there would pass any bound for nothing measured.
       {"penetration_max", false, "m", "deepest node inside a collider, any frame",
-       [](E m) { return V(m.penetration_max); }},
+       [](E m) { return m.penetration_deepest.empty() ? V() : V(m.penetration_max); }},
       {"penetration_mean_max", false, "m", "largest per-frame mean depth of penetrating nodes",
-       [](E m) { return V(m.penetration_mean_max); }},
+       [](E m) { return m.penetration_deepest.empty() ? V() : V(m.penetration_mean_max); }},
       {"energy_drift_max", false, "rel", "max |E(t) - E(0)| / E_ref",
        [](E m) { return m.drift.total.empty() ? V() : V(m.drift.max_abs_total); }},
       {"energy_rise", false, "J", "largest rise of total energy above an earlier low",

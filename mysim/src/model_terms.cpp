@@ -25,7 +25,8 @@ const std::vector<ModelTerm>& modelTerms() {
       {"bending", "no bending energy: material.bending {\"model\": \"none\"} (a membrane)",
        [](const json& s) {
          const json& b = member(material(s), "bending");
-         return b.is_object() && b.value("model", "") != "none";
+         // Compared as JSON, never read as a string: the scene is not validated yet.
+         return b.is_object() && member(b, "model") != json("none");
        },
        [](json& s) { s["system"]["material"]["bending"] = {{"model", "none"}}; }},
       {"damping", "material.damping_rate 0: no drag settles it",

@@ -15,10 +15,9 @@ namespace springcheck::test_support {
 
 // The trade of `scene` over `axes` (a grid run in a folder of its own, one case at a time), the
 // settling judged against a relative bound `bound`.
-inline TradeAnswer tradeOver(const std::string& scene, const TradeAxes& axes,
-                             const std::string& folder, double bound = 0.1,
-                             const std::string& quantity = "tip_drop") {
-  EngineRegistry registry;
+inline TradeAnswer tradeOver(EngineRegistry& registry, const std::string& scene,
+                             const TradeAxes& axes, const std::string& folder, double bound,
+                             const std::string& quantity) {
   const std::string work = testing::TempDir() + "/" + folder;
   std::filesystem::remove_all(work);
   const auto grid = planTradeGrid(scene, "case", axes);
@@ -33,6 +32,14 @@ inline TradeAnswer tradeOver(const std::string& scene, const TradeAxes& axes,
                  closedFormReference(*loaded, mysim::buildModel(*loaded), quantity), "mysim",
                  "backward-euler", nullptr};
   return analyseTrade(in, {quantity, bound, true, Cost::WallTime});
+}
+
+// The same with the built-in engines only.
+inline TradeAnswer tradeOver(const std::string& scene, const TradeAxes& axes,
+                             const std::string& folder, double bound = 0.1,
+                             const std::string& quantity = "tip_drop") {
+  EngineRegistry registry;
+  return tradeOver(registry, scene, axes, folder, bound, quantity);
 }
 
 }  // namespace springcheck::test_support

@@ -146,7 +146,8 @@ TradeAnswer analyseTrade(const TradeInputs& in, const TradeQuestion& q) {
 }
 
 std::string describeSetup(const TradeSetup& s, const TradeAnswer& a) {
-  std::string text = std::to_string(s.resolution) + " cells, " + s.engine +
+  // "resolution", not "cells": a chain counts links, a disc rings (the report says the same).
+  std::string text = "resolution " + std::to_string(s.resolution) + ", " + s.engine +
                      (s.integrator == "-" ? "" : " " + s.integrator) + ", dt " +
                      formatNumber(s.dt, 4) + " s";
   if (s.physical_error && a.reference.value && *a.reference.value != 0.0) {

@@ -86,7 +86,7 @@ struct TradeAnswer {
 
 TradeAnswer analyseTrade(const TradeInputs& inputs, const TradeQuestion& question);
 
-// "16 cells, mysim vbd:iterations=40, dt 0.004 s: 0.41 % (1.2e-4 m) in 0.031 s".
+// "resolution 16, mysim vbd:iterations=40, dt 0.004 s: 0.41 % (1.2e-4 m) in 0.031 s".
 std::string describeSetup(const TradeSetup& s, const TradeAnswer& a);
 
 }  // namespace springcheck

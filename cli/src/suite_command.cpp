@@ -5,7 +5,9 @@
 #include "commands.h"
 #include "compare/io/scene_files.h"
 #include "compare/studies/comparison.h"
+#include "compare/io/atomic_file.h"
 #include "compare/studies/gate.h"
+#include "compare/studies/gate_report_formats.h"
 #include "data_dir.h"
 
 namespace springcheck {
@@ -17,7 +19,31 @@ struct SuiteOptions {
   std::vector<std::string> engines_files;
   Timing timing;
   std::string tolerances;  // also gate the runs against this file
+  std::string gate_json;   // and write the gate's results here
 };
+
+// The gate on the suite's runs (a scene run in every engine its checks name is not run again).
+// A failed check makes the exit code 1 even where a run blew up or stopped at a solver limit
+// (3, 5): the gate is what CI reads, and a blow-up on some scene must not hide it.
+int gateSuite(const EngineRegistry& registry, const Tolerances& tolerances,
+              const ComparisonCache& done, const SuiteOptions& o, int code) {
+  const auto report = runGate(registry, tolerances, done);
+  if (!report) {
+    std::cerr << "error: gate: " << report.error() << '\n';
+    return kBadInput;
+  }
+  printGate(std::cout, *report);
+  if (!o.gate_json.empty()) {
+    auto written = writeFileAtomically(
+        o.gate_json, [&](std::ostream& out) { writeGateJson(out, *report, o.tolerances); });
+    if (!written) {
+      std::cerr << "error: --gate-json: " << written.error() << '\n';
+      return kFailure;
+    }
+  }
+  const bool hidden = code == kOk || code == kBlowUp || code == kSolverLimit;
+  return !report->passed() && hidden ? kFailure : code;
+}
 
 // Every scene under a directory in every engine that takes it (every engine of the registry,
 // the user's own included; an engine that refuses a scene says why, and that is listed), with
@@ -29,6 +55,10 @@ int runSuite(const SuiteOptions& o) {
   auto files = sceneFiles(o.dir);
   if (!files) {
     std::cerr << "error: " << files.error() << '\n';
+    return kBadInput;
+  }
+  if (!o.gate_json.empty() && o.tolerances.empty()) {
+    std::cerr << "error: --gate-json: expected --tolerances too (the gate it writes)\n";
     return kBadInput;
   }
   std::optional<Tolerances> tolerances;
@@ -69,15 +99,7 @@ int runSuite(const SuiteOptions& o) {
     std::error_code ec;
     if (tolerances) done.emplace(std::filesystem::weakly_canonical(file, ec).string(), *comparison);
   }
-  if (tolerances) {
-    const auto report = runGate(*registry, *tolerances, done);
-    if (!report) {
-      std::cerr << "error: gate: " << report.error() << '\n';
-      return kBadInput;
-    }
-    printGate(std::cout, *report);
-    if (!report->passed() && code == kOk) code = kFailure;
-  }
+  if (tolerances) code = gateSuite(*registry, *tolerances, done, o, code);
   std::cout << "results in " << o.out << "/<scene>/\n";
   return code;
 }
@@ -95,6 +117,8 @@ void addSuiteCommand(CLI::App& app, int& exit_code) {
   suite->add_option("--tolerances", options->tolerances,
                     "Then check these bounds against the runs (a tolerances file, which may "
                     "name its own engines_file); the exit code says whether they held");
+  suite->add_option("--gate-json", options->gate_json,
+                    "With --tolerances: also write every check's result to this JSON file");
   suite->callback([options, &exit_code] { exit_code = runSuite(*options); });
 }
 

@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# The whole test suite, twice: a Release build, then every test again in a build with
-# AddressSanitizer and UndefinedBehaviorSanitizer (the debug preset, -O1 so it runs in minutes).
+# The whole test suite, twice: a Release build and every test, then every test again in a build
+# with AddressSanitizer and UndefinedBehaviorSanitizer (the debug preset, -O1 so it runs in
+# minutes), except those labelled "tooling" (tests/CMakeLists.txt: their time is Python,
+# matplotlib, Slurm or a nested CMake build, not our C++), which the Release pass has run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh default
 ctest --preset default -j "$(nproc)"
 scripts/setup.sh debug
-ctest --preset debug -j "$(nproc)"
+ctest --preset debug -j "$(nproc)" --label-exclude tooling

@@ -14,6 +14,16 @@ namespace {
 
 using nlohmann::json;
 
+}  // namespace
+
+bool sceneDeclares(const json& scene, const std::string& term) {
+  if (!scene.contains("needs") || !scene["needs"].is_array()) return false;
+  const json& needs = scene["needs"];
+  return std::find(needs.begin(), needs.end(), json(term)) != needs.end();
+}
+
+namespace {
+
 AblationRun runVariant(const EngineRegistry& registry, const std::string& path, json scene,
                        const TradeSetup& setup, const std::string& quantity, double reference,
                        double bound) {
@@ -54,12 +64,6 @@ std::expected<Ablation, std::string> ablate(const EngineRegistry& registry, cons
                                             double reference, double bound) {
   auto scene = mysim::readJsonFile(path, "scene file");
   if (!scene) return std::unexpected(scene.error());
-  std::vector<std::string> needs;
-  if (scene->contains("needs") && (*scene)["needs"].is_array()) {
-    for (const json& n : (*scene)["needs"]) {
-      if (n.is_string()) needs.push_back(n.get<std::string>());
-    }
-  }
   Ablation a;
   a.full = runVariant(registry, path, *scene, setup, quantity, reference, bound);
   json droppable = *scene;
@@ -71,7 +75,7 @@ std::expected<Ablation, std::string> ablate(const EngineRegistry& registry, cons
     AblationRun run = runVariant(registry, path, variant, setup, quantity, reference, bound);
     run.term = term.name;
     run.description = term.description;
-    run.declared = std::find(needs.begin(), needs.end(), term.name) != needs.end();
+    run.declared = sceneDeclares(*scene, term.name);
     if (run.within && !run.declared) {
       term.remove(droppable);
       dropped.push_back(term.name);

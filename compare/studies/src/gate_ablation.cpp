@@ -5,6 +5,7 @@
 #include <map>
 
 #include "compare/io/text_format.h"
+#include "compare/studies/ablation.h"
 #include "mysim/model_terms.h"
 #include "mysim/scene_file.h"
 
@@ -34,12 +35,6 @@ std::vector<std::pair<std::string, SceneChecks>> byScene(const GateReport& repor
   return scenes;
 }
 
-bool declares(const json& scene, const std::string& term) {
-  if (!scene.contains("needs") || !scene["needs"].is_array()) return false;
-  const json& needs = scene["needs"];
-  return std::find(needs.begin(), needs.end(), json(term)) != needs.end();
-}
-
 // Evaluates the scene's checks on the comparison without the term.
 void judge(GateTermEffect& effect, const SceneChecks& checks, const Comparison& without) {
   effect.all_within = true;
@@ -65,7 +60,7 @@ std::expected<GateTermEffect, std::string> ablateTerm(const EngineRegistry& regi
   const ToleranceCheck& first = checks.results.front()->check;
   GateTermEffect effect{first.scene.substr(first.scene.find_last_of('/') + 1) +
                             first.variantLabel(),
-                        term.name, declares(scene, term.name)};
+                        term.name, sceneDeclares(scene, term.name)};
   effect.checks = checks.results.size();
   term.remove(scene);
   scene.erase("needs");  // the variant lacks a term the scene may declare

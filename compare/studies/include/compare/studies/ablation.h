@@ -4,6 +4,7 @@
 // colliders, driven pins), each term's effect on the settled quantity against the bound, and the
 // cheapest model that stays within it. The terms come from mysim's catalogue (model_terms.h).
 #include <expected>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,6 +33,9 @@ struct Ablation {
   // together: the cheapest model. Its terms are the ones the scene carries but does not need.
   std::optional<AblationRun> cheapest;
 };
+
+// Whether a scene file's `needs` name the model term (model_terms.h): a declared term is kept.
+bool sceneDeclares(const nlohmann::json& scene, const std::string& term);
 
 // At `setup` (its resolution, engine, integrator and step) of the material scene at `path`;
 // `reference` and `bound` (absolute) from the trade's answer.

@@ -27,6 +27,20 @@ def engines_text(check):
     return " ~ ".join(parts)
 
 
+def scene_text(c):
+    """The scene, and the variant a check runs (resolution, step) where it names one."""
+    text = os.path.basename(c["scene"]).removesuffix(".json")
+    variant = [f"res {c['resolution']}"] if c.get("resolution") else []
+    variant += [f"dt {c['dt']:g} s"] if c.get("dt") else []
+    return text + ("\n" + ", ".join(variant) if variant else "")
+
+
+def metric_text(c):
+    """The metric, or its error against the physical reference where the check holds that."""
+    kind = c.get("physical_error")
+    return f"{c['metric']}\n{kind} error vs physics" if kind else c["metric"]
+
+
 def gate_rows(checks):
     """Rows (failures first), their failed flags and their heights in lines (the reason wrapped,
     never cut)."""
@@ -38,11 +52,11 @@ def gate_rows(checks):
             reason += " Note: " + c["note"]
         wrapped = textwrap.wrap(reason, REASON_WIDTH) or [""]
         engines = textwrap.wrap(engines_text(c), ENGINES_WIDTH, break_on_hyphens=False) or [""]
-        rows.append(["PASS" if c["passed"] else "FAIL", os.path.basename(c["scene"]).removesuffix(".json"),
-                     "\n".join(engines), c["metric"], c.get("unit", ""), f"{c['bound']:.3g}", measured,
+        rows.append(["PASS" if c["passed"] else "FAIL", scene_text(c), "\n".join(engines),
+                     metric_text(c), c.get("unit", ""), f"{c['bound']:.3g}", measured,
                      "\n".join(wrapped)])
         failed.append(not c["passed"])
-        lines.append(max(len(wrapped), len(engines)))
+        lines.append(max(len(wrapped), len(engines), 2 if c.get("physical_error") else 1))
     return rows, failed, lines
 
 

@@ -214,8 +214,8 @@ std::vector<std::string> readNeeds(FieldReader& top, const json& root) {
                                   modelTermNames()};
     }
     if (!term->present(root)) {
-      throw FieldError{field, "'" + needs[k] + "': the scene does not carry it (" +
-                                  term->description + " is what taking it out would mean)"};
+      throw FieldError{field, "'" + needs[k] + "': the scene does not carry it, so there is "
+                                  "nothing to keep (taking it out means: " + term->description + ")"};
     }
   }
   return needs;

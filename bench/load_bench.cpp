@@ -57,7 +57,7 @@ void clothRun(benchmark::State& state, int threads, bool follow_load, bool loade
   state.counters["threads_used"] = used;
 }
 
-void registerAll() {
+void registerLoadBenches() {
   struct Case {
     const char* name;
     int threads;
@@ -76,6 +76,6 @@ void registerAll() {
   }
 }
 
-const bool registered = (registerAll(), true);
+const bool loadBenchesRegistered = (registerLoadBenches(), true);
 
 }  // namespace

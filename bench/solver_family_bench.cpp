@@ -86,6 +86,6 @@ void registerFamilies() {
   }
 }
 
-const bool registered = (registerFamilies(), true);
+const bool familyBenchesRegistered = (registerFamilies(), true);
 
 }  // namespace

@@ -62,7 +62,7 @@ void engineBenchmark(benchmark::State& state, const springcheck::EngineRegistry&
 // its square, see docs/reference.md).
 constexpr double kCgTolerance = 1e-4;
 
-void registerAll() {
+void registerStepBenches() {
   for (const std::string& integrator : mysim::integratorNames()) {  // every one of the catalogue
     benchmark::RegisterBenchmark(("BM_MysimStep/" + integrator + "/32").c_str(),
                                  [integrator](benchmark::State& st) {
@@ -138,6 +138,6 @@ void registerAll() {
   }
 }
 
-const bool registered = (registerAll(), true);
+const bool stepBenchesRegistered = (registerStepBenches(), true);
 
 }  // namespace

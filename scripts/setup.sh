@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(cmake g++ make pkg-config libbullet-dev libeigen3-dev googletest libgtest-dev
+packages=(cmake g++ make ninja-build pkg-config libbullet-dev libeigen3-dev googletest libgtest-dev
           libbenchmark-dev nlohmann-json3-dev libcli11-dev python3-matplotlib python3-numpy
           libglfw3-dev libgl-dev libgl1-mesa-dri xvfb xauth help2man
           libpng-dev libstb-dev fonts-dejavu-core xdotool nodejs)

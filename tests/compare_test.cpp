@@ -27,6 +27,7 @@
 #include "mysim/cloth.h"
 #include "mysim/cloth_mesh.h"
 #include "mysim/scene_file.h"
+#include "source_root.h"
 
 namespace springcheck {
 namespace {
@@ -305,7 +306,7 @@ TEST(SettlingMetric, TimeAfterWhichKineticEnergyStaysLowAndMaxStrain) {
   EXPECT_DOUBLE_EQ(maxStrainOverRun(model, run), 0.25);
 }
 
-const std::string kRoot = SPRINGCHECK_SOURCE_DIR;
+using test::kRoot;
 
 std::string checkJson(const std::string& fields) { return R"({"checks": [{)" + fields + "}]}"; }
 const std::string kGoodCheck =

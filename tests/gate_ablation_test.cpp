@@ -2,6 +2,7 @@
 // the scene declares it; a term a check needs is not offered.
 // ctest-label: physics
 #include "compare/studies/gate_ablation.h"
+#include "source_root.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +12,7 @@
 namespace springcheck {
 namespace {
 
-const std::string kRoot = SPRINGCHECK_SOURCE_DIR;
+using test::kRoot;
 
 const GateTermEffect* effectOf(const std::vector<GateTermEffect>& effects,
                                const std::string& term) {

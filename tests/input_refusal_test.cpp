@@ -11,12 +11,13 @@
 #include "compare/io/csv.h"
 #include "compare/studies/sweep.h"
 #include "compare/studies/tolerances.h"
+#include "source_root.h"
 
 namespace springcheck {
 namespace {
 
 namespace fs = std::filesystem;
-const std::string kRoot = SPRINGCHECK_SOURCE_DIR;
+using test::kRoot;
 
 class InputFiles : public ::testing::Test {
  protected:

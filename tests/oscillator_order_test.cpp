@@ -9,11 +9,12 @@
 #include "compare/engines/engine_registry.h"
 #include "compare/metrics/closed_form.h"
 #include "mysim/integrator.h"
+#include "source_root.h"
 
 namespace springcheck {
 namespace {
 
-const std::string kRoot = SPRINGCHECK_SOURCE_DIR;
+using test::kRoot;
 
 double errorAt(const EngineRegistry& registry, const std::string& integrator, mysim::Scene scene,
                double dt) {

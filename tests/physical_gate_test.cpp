@@ -8,11 +8,12 @@
 #include "compare/metrics/elastic_catenary.h"
 #include "compare/studies/gate.h"
 #include "compare/studies/tolerances.h"
+#include "source_root.h"
 
 namespace springcheck {
 namespace {
 
-const std::string kRoot = SPRINGCHECK_SOURCE_DIR;
+using test::kRoot;
 
 std::string cableCheck(int links, const std::string& relative) {
   return R"({"scene": "scenes/material/cable_catenary.json", "resolution": )" +

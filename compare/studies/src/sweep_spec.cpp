@@ -15,7 +15,7 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-std::string number(double v) { return formatNumber(v, 10); }
+std::string exactNumber(double v) { return formatNumber(v, 10); }
 
 // True when `interval` is a whole multiple of `dt` (to 1e-9 relative).
 bool multipleOf(double interval, double dt) {
@@ -23,7 +23,7 @@ bool multipleOf(double interval, double dt) {
   return std::abs(ratio - std::round(ratio)) < 1e-9 * ratio;
 }
 
-constexpr const char* kSchema = "docs/sweeps.md";
+constexpr const char* kSweepSchema = "docs/sweeps.md";
 // Cases one spec may expand to: a day of the slowest shipped sweep's cases on 2 cores, and a
 // table of tens of megabytes. More is a mistake or a cluster's job, split into specs or shards.
 constexpr double kMaxSweepCases = 100000;
@@ -60,8 +60,8 @@ void readSteps(mysim::FieldReader& top, SweepSpec& s) {
       top.positive("sample_interval", *std::max_element(s.dts.begin(), s.dts.end()));
   for (std::size_t k = 0; k < s.dts.size(); ++k) {
     if (!multipleOf(s.sample_interval, s.dts[k])) {
-      throw FieldError{"sample_interval", number(s.sample_interval) +
-                                              " s is not a multiple of dt " + number(s.dts[k]) +
+      throw FieldError{"sample_interval", exactNumber(s.sample_interval) +
+                                              " s is not a multiple of dt " + exactNumber(s.dts[k]) +
                                               " s (frames of all runs must line up)"};
     }
     // Every scene's run (or the spec's duration) must hold at least one step.
@@ -69,8 +69,8 @@ void readSteps(mysim::FieldReader& top, SweepSpec& s) {
       const double duration = s.duration.value_or(scene.duration);
       if (s.dts[k] > duration) {
         throw FieldError{"dt[" + std::to_string(k) + "]",
-                         "a step no longer than the duration (" + number(s.dts[k]) + " s > " +
-                             number(duration) + " s of " + path + ")"};
+                         "a step no longer than the duration (" + exactNumber(s.dts[k]) + " s > " +
+                             exactNumber(duration) + " s of " + path + ")"};
       }
     }
   }
@@ -95,7 +95,7 @@ void readReference(mysim::FieldReader& top, SweepSpec& s) {
     if (!name) throw FieldError{"reference.integrator", name.error()};
     s.reference_integrator = *name;
     s.reference_refine = static_cast<int>(r.integer("refine", 1, 1'000'000, 16));
-    r.refuseUnknown(kSchema);
+    r.refuseUnknown(kSweepSchema);
   } else {
     mysim::failField("reference",
                      "\"closed_form\", \"self\", {\"integrator\": NAME, \"refine\": N} or "
@@ -134,7 +134,7 @@ SweepSpec readSpec(const json& j, const std::string& source, EngineRegistry& reg
   readEngines(top, registry, s);
   readSteps(top, s);
   readReference(top, s);
-  top.refuseUnknown(kSchema);
+  top.refuseUnknown(kSweepSchema);
   // The grid's size, counted before it is expanded (a 10^7-value axis once took gigabytes before
   // the first run): at most kMaxSweepCases cases a spec.
   double cases = 0;

@@ -18,7 +18,7 @@ namespace {
 
 // Ten significant digits: what every sweep table has been written with (a value read back and
 // written again is the same text).
-std::string number(double v) { return formatNumber(v, 10); }
+std::string cellNumber(double v) { return formatNumber(v, 10); }
 
 template <typename T>
 bool parseNumber(const std::string& text, T& value) {
@@ -47,7 +47,7 @@ Column optional(const char* name, std::optional<T> SweepRow::*field) {
   return {name,
           [field](const SweepRow& r) {
             if (!(r.*field)) return std::string();
-            if constexpr (std::is_same_v<T, double>) return number(*(r.*field));
+            if constexpr (std::is_same_v<T, double>) return cellNumber(*(r.*field));
             return std::to_string(*(r.*field));
           },
           [field](SweepRow& r, const std::string& s) {
@@ -63,7 +63,7 @@ Column optional(const char* name, std::optional<T> SweepRow::*field) {
 std::string quantitiesText(const SettledQuantities& quantities) {
   std::string out;
   for (const auto& [name, q] : quantities) {
-    out += (out.empty() ? "" : ";") + name + "=" + number(q.end) + ":" + number(q.earlier);
+    out += (out.empty() ? "" : ";") + name + "=" + cellNumber(q.end) + ":" + cellNumber(q.earlier);
   }
   return out;
 }
@@ -99,11 +99,11 @@ const std::vector<Column>& columns() {
        [](R& r, const std::string& s) { return r.c.engine = s, true; }},
       {"integrator", [](const R& r) { return r.c.integrator; },
        [](R& r, const std::string& s) { return r.c.integrator = s, true; }},
-      {"dt", [](const R& r) { return number(r.c.dt); },
+      {"dt", [](const R& r) { return cellNumber(r.c.dt); },
        [](R& r, const std::string& s) { return parseNumber(s, r.c.dt); }},
-      {"stiffness_scale", [](const R& r) { return number(r.c.stiffness_scale); },
+      {"stiffness_scale", [](const R& r) { return cellNumber(r.c.stiffness_scale); },
        [](R& r, const std::string& s) { return parseNumber(s, r.c.stiffness_scale); }},
-      {"tolerance", [](const R& r) { return r.c.tolerance > 0 ? number(r.c.tolerance) : ""; },
+      {"tolerance", [](const R& r) { return r.c.tolerance > 0 ? cellNumber(r.c.tolerance) : ""; },
        [](R& r, const std::string& s) {
          r.c.tolerance = 0.0;
          return s.empty() || parseNumber(s, r.c.tolerance);

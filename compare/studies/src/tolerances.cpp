@@ -18,7 +18,7 @@ namespace fs = std::filesystem;
 using mysim::FieldError;
 using mysim::FieldReader;
 
-constexpr const char* kSchema = "docs/compare.md";
+constexpr const char* kToleranceSchema = "docs/compare.md";
 
 // A path relative to scene_root, or a shipped scene by name ("chain_hanging": no folder, no
 // .json), found wherever springcheck is installed.
@@ -113,7 +113,7 @@ ToleranceCheck readCheck(FieldReader& r, const fs::path& root, const EngineRegis
   if (c.why.empty()) {
     throw FieldError{r.field("why"), "expected the reason for this bound (a non-empty string)"};
   }
-  r.refuseUnknown(kSchema);
+  r.refuseUnknown(kToleranceSchema);
   return c;
 }
 
@@ -137,7 +137,7 @@ std::expected<Tolerances, std::string> readTolerances(const nlohmann::json& root
     top.objects("checks", [&](FieldReader& check, std::size_t) {
       t.checks.push_back(readCheck(check, scene_root, registry, t.scenes));
     });
-    top.refuseUnknown(kSchema);
+    top.refuseUnknown(kToleranceSchema);
     return t;
   });
 }

@@ -2,10 +2,13 @@
 # The whole test suite, twice: a Release build and every test, then every test again in a build
 # with AddressSanitizer and UndefinedBehaviorSanitizer (the debug preset, -O1 so it runs in
 # minutes), except those labelled "tooling" (tests/CMakeLists.txt: their time is Python,
-# matplotlib, Slurm or a nested CMake build, not our C++), which the Release pass has run.
+# matplotlib, Slurm or a nested CMake build, not our C++) and "slow" (whole runs of every shipped
+# scene in every engine, the full gate, the killed-process test: 16 of the sanitizer pass's 29
+# CPU-minutes; the sanitizers run every scene's opening steps in every engine instead), which
+# the Release pass has run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh default
 ctest --preset default -j "$(nproc)"
 scripts/setup.sh debug
-ctest --preset debug -j "$(nproc)" --label-exclude tooling
+ctest --preset debug -j "$(nproc)" --label-exclude 'tooling|slow'

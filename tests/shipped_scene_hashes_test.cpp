@@ -2,8 +2,11 @@
 // engine and with every mysim integrator, ends on the final_state_hash stored in
 // tests/data/shipped_scene_hashes.json (taken before the code was restructured), or is refused
 // where it was refused then. A redesign must not move a single bit; an engine or integrator with
-// no stored hash fails, naming the hash to store.
+// no stored hash fails, naming the hash to store. The whole runs are slow under the sanitizers
+// (labelled slow: the Release pass runs them); the sanitizer pass runs every scene's opening
+// steps in every engine instead, which reaches the same code.
 // ctest-label: physics,bullet
+// ctest-label ShippedScene: physics,bullet,slow
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -44,6 +47,7 @@ std::vector<std::string> shippedScenes() {
 }
 
 class ShippedScene : public ::testing::TestWithParam<std::string> {};
+class ShippedSceneOpening : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ShippedScene, EveryEngineEndsOnTheStoredFinalStateHash) {
   std::ifstream in(SPRINGCHECK_SOURCE_DIR "/tests/data/shipped_scene_hashes.json");
@@ -69,6 +73,36 @@ TEST_P(ShippedScene, EveryEngineEndsOnTheStoredFinalStateHash) {
   }
 }
 
+// The first steps of every shipped scene in every engine: refused exactly where the whole run is
+// (a refusal is about the model, never the duration), else frames that are all finite and the
+// steps asked for, unless a health check stopped the run and said when.
+TEST_P(ShippedSceneOpening, EveryEngineStepsFinitelyOrIsRefusedAsInTheWholeRun) {
+  constexpr int kOpeningSteps = 10;  // enough to reach every force, contact and solver path
+  std::ifstream in(SPRINGCHECK_SOURCE_DIR "/tests/data/shipped_scene_hashes.json");
+  const nlohmann::json stored = nlohmann::json::parse(in)["scenes"];
+  const EngineRegistry registry;
+  const std::string file = GetParam();
+  auto scene = registry.loadScene(SPRINGCHECK_SOURCE_DIR "/" + file);
+  ASSERT_TRUE(scene) << scene.error();
+  scene->duration = kOpeningSteps * scene->dt;
+  scene->sample_interval = scene->dt;
+  for (const std::string& spec : everyEngineSpec(registry)) {
+    const bool refused_whole = stored[file].value(spec, "") == "refused";
+    auto record = registry.run(spec, *scene);
+    if (!record) {
+      EXPECT_EQ(record.error().kind, EngineError::Kind::Refused) << record.error().message;
+      EXPECT_TRUE(refused_whole) << file << " " << spec << ": refused, the whole run is not";
+      continue;
+    }
+    EXPECT_FALSE(refused_whole) << file << " " << spec << ": runs, the whole run is refused";
+    ASSERT_FALSE(record->frames.empty()) << file << " " << spec;
+    for (const mysim::ParticleRows& frame : record->frames) {
+      ASSERT_TRUE(frame.allFinite()) << file << " " << spec;
+    }
+    if (!record->blowup) EXPECT_EQ(record->steps, kOpeningSteps) << file << " " << spec;
+  }
+}
+
 std::string sceneName(const ::testing::TestParamInfo<std::string>& info) {
   std::string name = info.param.substr(std::string("scenes/").size());
   name = name.substr(0, name.size() - std::string(".json").size());
@@ -79,6 +113,8 @@ std::string sceneName(const ::testing::TestParamInfo<std::string>& info) {
 }
 
 INSTANTIATE_TEST_SUITE_P(SameBits, ShippedScene, ::testing::ValuesIn(shippedScenes()), sceneName);
+INSTANTIATE_TEST_SUITE_P(Opening, ShippedSceneOpening, ::testing::ValuesIn(shippedScenes()),
+                         sceneName);
 
 }  // namespace
 }  // namespace springcheck

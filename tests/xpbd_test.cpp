@@ -1,4 +1,4 @@
-// XPBD (mysim/src/xpbd.cpp): what it must converge to.
+// XPBD (mysim/src/integrators/xpbd.cpp): what it must converge to.
 //
 //   anchor (pinned) o----/\/\/\----o particle        the oscillator of test_support.h
 // ctest-label: physics

@@ -1,5 +1,5 @@
 #include "mysim/integrator.h"
-#include "mysim/vector_ops.h"
+#include "solvers/vector_ops.h"
 
 namespace mysim {
 namespace {

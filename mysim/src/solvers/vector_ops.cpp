@@ -1,4 +1,4 @@
-#include "mysim/vector_ops.h"
+#include "solvers/vector_ops.h"
 
 namespace mysim {
 namespace {

@@ -4,15 +4,11 @@
 #include <cmath>
 #include <string>
 
-#include "mysim/vector_ops.h"
+#include "solvers/vector_ops.h"
+#include "run/parallel_threshold.h"
 
 namespace mysim {
 
-namespace {
-// Below this many particles a force evaluation takes a few microseconds: starting threads would
-// cost more than it saves.
-constexpr int kParallelParticles = 512;
-}  // namespace
 
 ParticleSystem::ParticleSystem(Model model, BlowUpLimits limits)
     : model_(std::move(model)),

@@ -8,11 +8,11 @@
 #include "mysim/particle_system.h"
 #include "mysim/sparse_ldlt3.h"
 #include "mysim/spring_forces.h"
+#include "run/parallel_threshold.h"
 
 namespace mysim {
 namespace {
 
-constexpr int kParallelParticles = 512;  // below this one thread is faster (particle_system.cpp)
 
 // Liu, O'Brien, Liu, Kavan and Xiao, "Fast simulation of mass-spring systems" (SIGGRAPH Asia
 // 2013): the implicit-Euler step (implicit_euler_step.h) solved by block coordinate descent on

@@ -8,12 +8,11 @@
 #include "mysim/particle_system.h"
 #include "mysim/spring_block_matrix.h"
 #include "mysim/ssor_conjugate_gradient.h"
+#include "run/parallel_threshold.h"
 
 namespace mysim {
 namespace {
 
-// Below this many particles one thread is faster (see particle_system.cpp).
-constexpr int kParallelParticles = 512;
 
 // Backward Euler as in Baraff and Witkin, "Large steps in cloth simulation" (SIGGRAPH 1998),
 // eq. 16: one Newton step of v1 = v0 + h M^-1 f(x0 + h v1, v1), linearised at (x0, v0):

@@ -75,6 +75,13 @@ def function_name(signature):
     return name.group(1) if name else signature.strip()[:40]
 
 
+def not_a_function(stripped):
+    """Whether a line opening a brace opens a type, namespace, control block or initialiser."""
+    return bool(NOT_A_FUNCTION.match(stripped)
+                or re.search(r"\b(struct|class|enum|union)\b[^()]*\{", stripped)
+                or "=" in stripped.split("{")[0] and ")" not in stripped)
+
+
 def long_functions(path):
     text = path.read_text(errors="replace")
     if "R\"(" in text:  # raw strings would fool the brace count; none of our long code has them
@@ -83,28 +90,24 @@ def long_functions(path):
     for line in text.split("\n"):
         code, in_comment = strip_code(line, in_comment)
         code_lines.append(code)
-    found, depth, kinds = [], 0, []  # kinds: for each open brace, "type", "function" or "block"
-    start = None
+    found, opens = [], []  # opens: for each open brace, whether it opened a function body
+    start = opening = None
     for k, code in enumerate(code_lines):
         for ch in code:
             if ch == "{":
-                inside_function = "function" in kinds
-                stripped = code.strip()
-                if inside_function:
-                    kinds.append("block")
-                elif NOT_A_FUNCTION.match(stripped) or re.search(r"\b(struct|class|enum|union)\b[^()]*\{", stripped) or "=" in stripped.split("{")[0] and ")" not in stripped:
-                    kinds.append("type" if re.search(r"\b(struct|class|union|namespace)\b", stripped) else "block")
-                elif ")" in "".join(code_lines[signature_start(code_lines, k):k + 1]) or stripped.startswith(":"):
-                    kinds.append("function")
-                    start = signature_start(code_lines, k)
-                else:
-                    kinds.append("block")
-            elif ch == "}" and kinds:
-                kind = kinds.pop()
-                if kind == "function" and "function" not in kinds:
+                if any(opens) or not_a_function(code.strip()):
+                    opens.append(False)
+                    continue
+                first = signature_start(code_lines, k)
+                is_function = ")" in "".join(code_lines[first:k + 1]) or code.strip().startswith(":")
+                opens.append(is_function)
+                if is_function:
+                    start, opening = first, k
+            elif ch == "}" and opens:
+                if opens.pop() and not any(opens):
                     length = k - start + 1
                     if length > MAX_FUNCTION_LINES:
-                        signature = " ".join(code_lines[start:k + 1])
+                        signature = " ".join(code_lines[start:opening + 1])
                         found.append((start + 1, length, function_name(signature)))
     return found
 

@@ -25,9 +25,15 @@ NOT_A_FUNCTION = re.compile(r"^\s*(namespace|struct|class|enum|union|extern|if|f
 
 
 def tracked_files(root):
-    out = subprocess.run(["git", "-C", str(root), "ls-files"], capture_output=True, text=True,
-                         check=True).stdout.split()
-    return [root / f for f in out if f.endswith(SOURCE_SUFFIXES) or f.endswith("CMakeLists.txt")]
+    """The files git tracks; outside a git checkout (a source tarball), every source file but
+    those under a build or output folder."""
+    listed = subprocess.run(["git", "-C", str(root), "ls-files"], capture_output=True, text=True)
+    if listed.returncode == 0:
+        names = listed.stdout.split()
+    else:
+        names = [str(f.relative_to(root)) for f in root.rglob("*") if f.is_file()
+                 and f.relative_to(root).parts[0] not in ("build", "out", ".git")]
+    return [root / f for f in names if f.endswith(SOURCE_SUFFIXES) or f.endswith("CMakeLists.txt")]
 
 
 def strip_code(line, in_comment):

@@ -7,15 +7,20 @@ from report_style import Page
 STEPPERS = set()  # what stepped plain "mysim" on these scenes (each scene names its integrator)
 
 
+WITHOUT = {}  # reason -> scenes: suite scenes with no closed form, grouped by why
+
+
 def rows_of(m):
-    """(scene, quantity, exact, {engine: (error, at motion floor)}) for each suite scene with one."""
+    """(scene, quantity, exact, {engine: (error, at motion floor)}) for each suite scene with one.
+    An engine that blew up on such a scene gets the text "blew up" instead of an error."""
     rows = []
+    WITHOUT.clear()
     for c in m["comparisons"]:
         if c["group"] != "suite":
             continue
         with open(c["folder"] + "/comparison.json") as f:
             j = json.load(f)
-        errors, quantity, exact = {}, None, None
+        errors, quantity, exact, why_not = {}, None, None, None
         for e in j["engines"]:
             if e["engine"] == "mysim" and e.get("integrator"):
                 STEPPERS.add(e["integrator"])
@@ -23,9 +28,20 @@ def rows_of(m):
             if form and e.get("closed_form_error") is not None:
                 quantity, exact = form["quantity"], form["exact"]
                 errors[e["engine"]] = (e["closed_form_error"], form.get("at_motion_floor", False))
-        if errors:
+            elif e.get("blowup_time") is not None:
+                errors[e["engine"]] = ("blew up", False)
+            elif e.get("no_closed_form"):
+                why_not = e["no_closed_form"]
+        if quantity is not None:
             rows.append((c["scene"], quantity, exact, errors))
+        elif why_not:
+            WITHOUT.setdefault(why_not, []).append(c["scene"])
     return rows
+
+
+def without_lines():
+    """One line per reason a suite scene has no closed form, naming the scenes."""
+    return [f"No closed form for {', '.join(sorted(scenes))}: {why}." for why, scenes in sorted(WITHOUT.items())]
 
 
 def draw(fig, ctx):
@@ -43,7 +59,7 @@ def draw(fig, ctx):
         for e in engines:
             if e in errors:
                 value, floor = errors[e]
-                line.append(f"{value:.2g}" + (" (motion left)" if floor else ""))
+                line.append(value if isinstance(value, str) else f"{value:.2g}" + (" (motion left)" if floor else ""))
             else:
                 line.append("")
         cells.append(line)
@@ -59,13 +75,14 @@ def draw(fig, ctx):
             cell.set_facecolor("#eeeeee")
     stepped = f"mysim: the integrator each scene names ({', '.join(sorted(STEPPERS))} here). " if STEPPERS else ""
     return [stepped + "'(motion left)': the nodes still moved by a tenth or more of the error over the run's last tenth, "
-            "so the error is the motion left at the end, the same for every engine, not its accuracy."]
+            "so the error is the motion left at the end, the same for every engine, not its accuracy. "
+            "'blew up': no error is measured on a run that stopped early."] + without_lines()
 
 
 def page():
     return Page("closed_forms", "How far is each engine from the exact answers?",
-                "Each suite scene with a closed form, and each engine's error against it: the circle (max distance "
-                "from the exact circle over the run), the pendulum (relative error of its period against the "
-                "rigid pendulum's elliptic-integral period), the hanging chain at rest (max node distance from "
-                "y_j = -[j L0 + (m g / k) j (2N - j + 1) / 2]). Your own engine is a column like any other; its "
+                "Each suite scene with a closed form (the column 'closed form' names it: the circle, the pendulum's "
+                "period, the hanging chain and the two-pin catenary at rest, the damped oscillator, the taut "
+                "chain's mode, the clamped strip's heavy elastica), and each engine's error against it. Scenes "
+                "without one are listed below with the reason. Your own engine is a column like any other; its "
                 "gate is in the tolerances file.", draw)

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <sstream>
 
 #include "compare/metrics/cantilever_metric.h"
 
@@ -19,7 +20,7 @@ double ellipticK(double k) {
 
 namespace {
 
-std::optional<ClosedFormError> circleError(const mysim::Model& model, const mysim::RunRecord& run) {
+ClosedFormResult circleError(const mysim::Model& model, const mysim::RunRecord& run) {
   double worst = 0.0;
   const Eigen::Vector2d s = model.circle_start;
   for (std::size_t f = 0; f < run.frames.size(); ++f) {
@@ -86,7 +87,7 @@ double motionLeft(const mysim::RunRecord& run) {
   return moved;
 }
 
-std::optional<ClosedFormError> chainSagError(const mysim::Model& model, const UniformChain& c,
+ClosedFormResult chainSagError(const mysim::Model& model, const UniformChain& c,
                                              const mysim::RunRecord& run) {
   const int n = c.particles - 1;
   const double g = model.gravity.norm();
@@ -104,7 +105,7 @@ std::optional<ClosedFormError> chainSagError(const mysim::Model& model, const Un
   return e;
 }
 
-std::optional<ClosedFormError> pendulumPeriodError(const mysim::Model& model, const UniformChain& c,
+ClosedFormResult pendulumPeriodError(const mysim::Model& model, const UniformChain& c,
                                                    const mysim::RunRecord& run) {
   const double g = model.gravity.norm();
   const mysim::Vec3 down = model.gravity / g;
@@ -123,7 +124,10 @@ std::optional<ClosedFormError> pendulumPeriodError(const mysim::Model& model, co
     }
     previous = u;
   }
-  if (crossings.size() < 2) return std::nullopt;
+  if (crossings.size() < 2) {
+    return std::unexpected("the bob crossed below its pin fewer than twice: too short a run to time a "
+                           "period (run it longer)");
+  }
   const double measured = (crossings.back() - crossings.front()) / (crossings.size() - 1);
   return ClosedFormError{"pendulum period", std::abs(measured / period - 1.0), period};
 }
@@ -174,10 +178,13 @@ std::optional<std::vector<mysim::Vec3>> twoPinCatenary(const mysim::Model& model
   return std::nullopt;
 }
 
-std::optional<ClosedFormError> twoPinCatenaryError(const mysim::Model& model, const UniformChain& c,
+ClosedFormResult twoPinCatenaryError(const mysim::Model& model, const UniformChain& c,
                                                    const mysim::RunRecord& run) {
   const auto nodes = twoPinCatenary(model, c);
-  if (!nodes) return std::nullopt;
+  if (!nodes) {
+    return std::unexpected("the two pins are one above the other (or the catenary's tension did not "
+                           "converge): no catenary to compare with");
+  }
   const mysim::Vec3 up = -model.gravity.normalized();
   double worst = 0.0, deepest = 0.0;
   for (int j = 1; j + 1 < c.particles; ++j) {
@@ -209,12 +216,13 @@ double dampedOscillator(double w0, double zeta, double v0, double t) {
   return v0 / (r1 - r2) * (std::exp(r1 * t) - std::exp(r2 * t));
 }
 
-std::optional<ClosedFormError> dampedOscillatorError(const mysim::Model& model, const UniformChain& c,
+ClosedFormResult dampedOscillatorError(const mysim::Model& model, const UniformChain& c,
                                                      const mysim::RunRecord& run) {
   const mysim::Vec3 v0 = mysim::at3(model.start_velocity, 1);
   const double along = v0.dot(c.direction);
   if ((v0 - along * c.direction).norm() > 1e-12 * std::max(1.0, v0.norm()) || model.drag != 0.0) {
-    return std::nullopt;
+    return std::unexpected("an oscillator with drag, or started moving across its spring, leaves the "
+                           "one-dimensional m x'' + c x' + k x = 0 the closed form solves");
   }
   const double w0 = std::sqrt(c.stiffness / c.particle_mass);
   const double zeta = c.damping / (2.0 * std::sqrt(c.stiffness * c.particle_mass));
@@ -239,20 +247,25 @@ std::optional<ClosedFormError> dampedOscillatorError(const mysim::Model& model, 
 // linearised discrete system, Rayleigh, "The theory of sound", sec. 120). The mode the start
 // velocity loads most is followed: its modal coordinate's upward zero crossings, linearly
 // interpolated between frames, give the measured frequency; the error is relative.
-std::optional<ClosedFormError> tautChainModeError(const mysim::Model& model, const UniformChain& c,
+ClosedFormResult tautChainModeError(const mysim::Model& model, const UniformChain& c,
                                                   const mysim::RunRecord& run) {
   const int free = c.particles - 2;
   const mysim::Vec3 first = mysim::at3(model.start_position, 0);
   const mysim::Vec3 last = mysim::at3(model.start_position, c.particles - 1);
   const double a = (last - first).norm() / (c.particles - 1);
   const double tension = c.stiffness * (a - c.rest_length);
-  if (!(tension > 0.0) || c.damping != 0.0 || model.drag != 0.0) return std::nullopt;
+  if (!(tension > 0.0) || c.damping != 0.0 || model.drag != 0.0) {
+    return std::unexpected("a chain between two pins without gravity has mode frequencies only when "
+                           "stretched (tension > 0) and undamped");
+  }
   const mysim::Vec3 line = (last - first).normalized();
   // The transverse direction: that of the start velocities.
   mysim::Vec3 across = mysim::Vec3::Zero();
   for (int i = 1; i <= free; ++i) across += mysim::at3(model.start_velocity, i);
   across -= across.dot(line) * line;
-  if (across.norm() == 0.0) return std::nullopt;
+  if (across.norm() == 0.0) {
+    return std::unexpected("a taut chain started without velocity across its line does not oscillate");
+  }
   across.normalize();
   auto shape = [&](int j, int i) { return std::sin(j * std::numbers::pi * i / (free + 1)); };
   int mode = 1;
@@ -276,7 +289,10 @@ std::optional<ClosedFormError> tautChainModeError(const mysim::Model& model, con
     }
     previous = q;
   }
-  if (crossings.size() < 3) return std::nullopt;
+  if (crossings.size() < 3) {
+    return std::unexpected("the mode crossed zero fewer than three times: too short a run to time "
+                           "its frequency (run it longer)");
+  }
   const double measured =
       2.0 * std::numbers::pi * (crossings.size() - 1) / (crossings.back() - crossings.front());
   return ClosedFormError{"taut chain, mode " + std::to_string(mode) + " frequency",
@@ -290,9 +306,48 @@ std::optional<std::vector<mysim::Vec3>> twoPinCatenaryNodes(const mysim::Model& 
   return twoPinCatenary(model, *chain);
 }
 
-std::optional<ClosedFormError> closedFormError(const mysim::Model& model,
-                                               const mysim::RunRecord& run) {
-  if (run.frames.empty()) return std::nullopt;
+namespace {
+
+// Why a model that is no uniform chain has no closed form (the cantilever is tried before).
+std::string notAChain(const mysim::Model& model, const mysim::RunRecord& run) {
+  if (readCantilever(model, run.frames.back())) {
+    return model.hinges.empty()
+               ? "a clamped strip bent by flex springs has no bending rigidity to put in the "
+                 "elastica (hinge bending has one)"
+               : "the strip's load w L^3 / B is past the elastica's solved range (1e6)";
+  }
+  if (model.springs.empty()) return "free particles without springs: no closed form";
+  if (isIndexOrderedPath(model)) return "a chain of unequal springs or unequal masses";
+  return "no closed form for this system (the suite has them for the circle, a uniform chain "
+         "hanging, between two pins, as a pendulum, an oscillator or a taut line, and a clamped "
+         "strip with hinge bending)";
+}
+
+// The closed forms of a uniform chain without gravity: the oscillator and the taut chain.
+ClosedFormResult weightlessChainError(const mysim::Model& model, const UniformChain& chain,
+                                      const mysim::RunRecord& run,
+                                      const std::vector<char>& only_first_pinned,
+                                      const std::vector<char>& both_ends_pinned) {
+  if (model.particleCount() == 2 && model.pinned == only_first_pinned) {
+    return dampedOscillatorError(model, chain, run);
+  }
+  if (model.particleCount() >= 3 && model.pinned == both_ends_pinned) {
+    return tautChainModeError(model, chain, run);
+  }
+  return std::unexpected("without gravity a chain has a closed form pinned at its first particle "
+                         "(two particles: the oscillator) or at both ends (the taut chain) only");
+}
+
+}  // namespace
+
+ClosedFormResult closedFormError(const mysim::Model& model, const mysim::RunRecord& run) {
+  if (run.frames.empty()) return std::unexpected("the run recorded no frame");
+  if (run.blowup) {
+    std::ostringstream why;
+    why << "the run blew up at t = " << run.blowup->time
+        << " s: a closed form judges a whole run, not its last healthy frame";
+    return std::unexpected(why.str());
+  }
   if (model.isCircle()) return circleError(model, run);
   if (auto cantilever = cantileverReference(model)) {
     const auto reading = readCantilever(model, run.frames.back());
@@ -302,30 +357,35 @@ std::optional<ClosedFormError> closedFormError(const mysim::Model& model,
     return e;
   }
   const std::optional<UniformChain> chain = uniformChain(model);
+  if (!chain) return std::unexpected(notAChain(model, run));
+  if (model.wind || model.pin_motion || !model.colliders.empty()) {
+    return std::unexpected(std::string(model.wind ? "wind" : model.pin_motion ? "driven pins" : "a collider") +
+                           " acts on the chain: its closed forms hold without wind, pin motion "
+                           "and colliders");
+  }
   std::vector<char> only_first_pinned(model.particleCount(), 0);
-  if (!only_first_pinned.empty()) only_first_pinned[0] = 1;
-  if (!chain || model.wind || model.pin_motion || !model.colliders.empty()) return std::nullopt;
+  only_first_pinned[0] = 1;
   std::vector<char> both_ends_pinned(model.particleCount(), 0);
   if (model.particleCount() >= 3) both_ends_pinned.front() = both_ends_pinned.back() = 1;
-  if (model.gravity.norm() == 0.0) {  // the oscillator and the taut chain
-    if (model.particleCount() == 2 && model.pinned == only_first_pinned) {
-      return dampedOscillatorError(model, *chain, run);
-    }
-    if (model.particleCount() >= 3 && model.pinned == both_ends_pinned) {
-      return tautChainModeError(model, *chain, run);
-    }
-    return std::nullopt;
+  if (model.gravity.norm() == 0.0) {
+    return weightlessChainError(model, *chain, run, only_first_pinned, both_ends_pinned);
   }
   if (model.particleCount() >= 3 && model.pinned == both_ends_pinned) {
     return twoPinCatenaryError(model, *chain, run);
   }
-  if (model.pinned != only_first_pinned) return std::nullopt;
+  if (model.pinned != only_first_pinned) {
+    return std::unexpected("a chain under gravity has a closed form pinned at its first particle or "
+                           "at both ends only");
+  }
   const double alignment = chain->direction.dot(model.gravity.normalized());
   if (alignment > 1.0 - 1e-12) return chainSagError(model, *chain, run);
-  if (chain->particles == 2 && model.drag == 0.0 && chain->damping == 0.0) {
-    return pendulumPeriodError(model, *chain, run);
+  if (chain->particles == 2) {
+    if (model.drag == 0.0 && chain->damping == 0.0) return pendulumPeriodError(model, *chain, run);
+    return std::unexpected("a damped pendulum has no closed-form period (the rigid pendulum's is "
+                           "undamped)");
   }
-  return std::nullopt;
+  return std::unexpected("a chain of several links released off the vertical swings with no "
+                         "closed form (chaotically: compare it by energy, not by trajectory)");
 }
 
 }  // namespace springcheck

@@ -25,8 +25,11 @@ EngineMetrics engineMetrics(const mysim::Model& model, const EngineRun& run) {
   m.repeats = r.repeats;
   m.threads = r.threads;
   m.steps = r.steps;
-  // A closed form of a run that stopped early would judge its last healthy frame: none.
-  if (!r.blowup) m.closed_form = closedFormError(model, r);
+  if (ClosedFormResult closed = closedFormError(model, r)) {
+    m.closed_form = *closed;
+  } else {
+    m.no_closed_form = closed.error();
+  }
   m.drift = energyDrift(r.energies);
   m.external_work = model.wind.has_value() || model.pin_motion.has_value();
   if (model.isCircle()) return m;

@@ -56,6 +56,25 @@ namespace {
 
 std::string format(const std::optional<double>& v) { return formatNumber(v, 4, "-"); }
 
+// Why closed_form_error is blank: once when every engine has the same reason, else per engine
+// (a blow-up is said below with its time).
+void printNoClosedForm(std::ostream& out, const std::vector<EngineMetrics>& engines) {
+  std::vector<const EngineMetrics*> without;
+  for (const EngineMetrics& m : engines) {
+    if (!m.closed_form && !m.blew_up) without.push_back(&m);
+  }
+  if (without.empty()) return;
+  bool same = true;
+  for (const EngineMetrics* m : without) same &= m->no_closed_form == without.front()->no_closed_form;
+  if (same && without.size() == engines.size()) {
+    out << "  no closed form: " << without.front()->no_closed_form << '\n';
+    return;
+  }
+  for (const EngineMetrics* m : without) {
+    out << "  " << m->engine << ": no closed form: " << m->no_closed_form << '\n';
+  }
+}
+
 }  // namespace
 
 void printComparison(std::ostream& out, const Comparison& c) {
@@ -89,6 +108,7 @@ void printComparison(std::ostream& out, const Comparison& c) {
     }
     out << '\n';
   }
+  printNoClosedForm(out, c.engines);
   for (const EngineMetrics& m : c.engines) {
     if (m.blew_up) {
       out << "  " << m.engine << ": "

@@ -38,6 +38,8 @@ json metricsJson(const EngineMetrics& m) {
       j["closed_form"]["motion_left"] = *m.closed_form->motion_left;
       j["closed_form"]["at_motion_floor"] = m.closed_form->atMotionFloor();
     }
+  } else {
+    j["no_closed_form"] = m.no_closed_form;
   }
   j["blowup_time"] = m.blew_up ? json(m.blowup_time) : json();
   j["status"] = m.status;
@@ -87,7 +89,8 @@ Write writeEngineTable(const std::string& path, const Comparison& c) {
     for (const MetricInfo& info : metricCatalog()) {
       if (!info.pair) engines << ',' << info.name;
     }
-    engines << ",wall_seconds,wall_median_seconds,realtime_factor,repeats,threads,steps,status\n";
+    engines << ",wall_seconds,wall_median_seconds,realtime_factor,repeats,threads,steps,status,"
+               "no_closed_form\n";
     for (const EngineMetrics& m : c.engines) {
       engines << csvField(m.engine);
       for (const MetricInfo& info : metricCatalog()) {
@@ -97,7 +100,8 @@ Write writeEngineTable(const std::string& path, const Comparison& c) {
         if (v) engines << *v;
       }
       engines << ',' << m.wall_seconds << ',' << m.wall_median_seconds << ',' << m.realtime_factor
-              << ',' << m.repeats << ',' << (m.threads > 0 ? std::to_string(m.threads) : "") << ',' << m.steps << ',' << m.status << '\n';
+              << ',' << m.repeats << ',' << (m.threads > 0 ? std::to_string(m.threads) : "") << ','
+              << m.steps << ',' << m.status << ',' << csvField(m.no_closed_form) << '\n';
     }
   });
 }

@@ -1,4 +1,5 @@
 #pragma once
+#include <expected>
 #include <optional>
 #include <string>
 
@@ -29,10 +30,14 @@ struct ClosedFormError {
   // motion_left is close enough to the error to be its floor (error < 10 x motion_left).
   bool atMotionFloor() const { return motion_left && error < 10.0 * *motion_left; }
 };
+// The error, or why the run has no closed form to be held to (a blank in a table would not say
+// whether the reference does not apply, was never computed, or failed): a sentence for tables
+// and the report.
+using ClosedFormResult = std::expected<ClosedFormError, std::string>;
 // Read from the model (so a sweep's scaled model gets its own closed form): a chain of equal
-// springs and masses, pinned at particle 0 only, with no wind, pin motion or sphere.
-std::optional<ClosedFormError> closedFormError(const mysim::Model& model,
-                                               const mysim::RunRecord& run);
+// springs and masses, pinned at particle 0 only, with no wind, pin motion or sphere. A run that
+// blew up has none (its last frame is only the last healthy one).
+ClosedFormResult closedFormError(const mysim::Model& model, const mysim::RunRecord& run);
 
 // The discrete elastic catenary's nodes, pins included, for a uniform chain pinned at its two
 // ends (nothing when the model is not one, or the pins are one above the other).

@@ -47,6 +47,7 @@ struct EngineMetrics {
   SagSeries sag;                            // per frame (empty for the circle)
   std::vector<double> penetration_deepest;  // m, per frame (empty without colliders)
   std::optional<ClosedFormError> closed_form;
+  std::string no_closed_form;  // without closed_form: why the run has none
   double penetration_max = 0.0;         // m, deepest over all frames (0 without colliders)
   double penetration_mean_max = 0.0;    // m, largest per-frame mean depth
   int penetration_count_max = 0;        // most nodes inside in any frame

@@ -71,6 +71,10 @@ def page(scene, rows, estimates, command):
                 notes.append(f"{engine} did not complete at " + ", ".join(r["resolution"] for r in failed)
                              + " cells (" + ", ".join(sorted({r["status"] for r in failed}))
                              + "; refine's output says when)")
+        prefix = "no closed form: "
+        why_not = sorted({r["note"][len(prefix):] for r in rows if (r.get("note") or "").startswith(prefix)})
+        if why_not and not any(r.get("closed_form_value") for r in rows):
+            notes.append("no black line, as " + "; ".join(why_not))
         return ["; ".join(dict.fromkeys(notes)) + "."] if notes else []
 
     caption = (f"{scene}{bent} at each resolution. Dotted: the Richardson limit of the "

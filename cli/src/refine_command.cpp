@@ -13,13 +13,7 @@
 #include "compare/io/invocation.h"
 #include "compare/io/text_format.h"
 #include "compare/io/whole_folder.h"
-#include "compare/metrics/cantilever_metric.h"
-#include "compare/metrics/closed_form.h"
-#include "compare/metrics/run_metrics.h"
-#include "compare/studies/physical_reference.h"
-#include "compare/studies/refinement.h"
-#include "compare/studies/trade_grid.h"
-#include "mysim/scene_file.h"
+#include "compare/studies/refine_study.h"
 
 namespace springcheck {
 namespace {
@@ -31,35 +25,8 @@ struct RefineOptions {
   std::string out = "out/refine";
   std::vector<std::string> engines_files;
   Timing timing;
+  int jobs = 0;
 };
-
-// One run's shape measurements: every catalogue metric marked `refined` that the scene has.
-struct RefineRow {
-  std::string scene, bending, engine, status;
-  int resolution = 0;
-  int particles = 0;
-  double wall_seconds = 0.0;
-  std::map<std::string, double> values;
-  double reference = NAN;  // the closed form's value (the heavy elastica's tip drop), where one is
-  std::string reference_quantity;
-};
-
-// The catalogue's refined metrics, in its order.
-std::vector<const MetricInfo*> refinedMetrics() {
-  std::vector<const MetricInfo*> list;
-  for (const MetricInfo& info : metricCatalog()) {
-    if (info.refined && !info.pair) list.push_back(&info);
-  }
-  return list;
-}
-
-// The scene file with system.resolution set, read as any scene file is.
-std::expected<mysim::Scene, std::string> sceneAt(const EngineRegistry& registry,
-                                                 const std::string& path, int resolution) {
-  auto text = sceneTextAtResolution(path, resolution);
-  if (!text) return std::unexpected(text.error());
-  return mysim::parseScene(*text, path, registry.sceneSections());
-}
 
 // Tables' number format (text_format.h); empty for a quantity the run does not have.
 std::string number(double v) { return std::isfinite(v) ? formatNumber(v) : ""; }
@@ -81,132 +48,62 @@ bool sortedDistinct(std::vector<int>& resolutions) {
   return true;
 }
 
+// Each run's line, in the table's order; a run that did not complete on stderr too.
+int printRuns(const std::vector<RefineRow>& rows) {
+  int failures = 0;
+  for (const RefineRow& row : rows) {
+    if (row.status != "ok") {
+      std::cerr << row.scene << " at resolution " << row.resolution << ", " << row.engine << ": "
+                << row.note << '\n';
+      ++failures;
+    }
+    std::cout << row.scene << " (" << row.bending << ") at " << row.resolution << " cells, "
+              << row.engine << ": " << row.status;
+    for (const auto& [name, value] : row.values) std::cout << ", " << name << " " << number(value);
+    std::cout << " (" << row.wall_seconds << " s)\n";
+  }
+  return failures;
+}
+
+void printEstimates(const std::vector<RefineEstimateRow>& estimates) {
+  std::cout << "\nconvergence (the last three resolutions; Richardson limit):\n";
+  for (const RefineEstimateRow& e : estimates) {
+    const double vs_reference = e.finestVsReference();
+    std::cout << "  " << e.scene << " " << e.engine << " " << e.quantity << " [" << e.unit
+              << "]: finest " << number(e.values.back()) << ", order "
+              << (e.estimate.order ? number(*e.estimate.order) : "- (" + e.estimate.reason + ")")
+              << ", limit " << (e.estimate.limit ? number(*e.estimate.limit) : "-")
+              << (std::isfinite(vs_reference)
+                      ? ", finest vs closed form " + number(100.0 * vs_reference) + " %"
+                      : "")
+              << '\n';
+  }
+}
+
 int refine(const RefineOptions& o) {
   const std::optional<EngineRegistry> registry = makeRegistry(o.engines_files);
   if (!registry) return kBadInput;
-  std::vector<int> resolutions = o.resolutions;
-  if (!sortedDistinct(resolutions)) return kBadInput;
-  const std::vector<std::string> engines = splitList(o.engines);
-  std::vector<RefineRow> rows;
-  int failures = 0;
-  for (const std::string& path : o.scenes) {
-    for (int resolution : resolutions) {
-      auto scene = sceneAt(*registry, path, resolution);
-      if (!scene) {
-        std::cerr << "error: " << scene.error() << '\n';
-        return kBadInput;
-      }
-      RunConfig config = runConfig(*scene);
-      applyTiming(o.timing, config);
-      const mysim::Model model = mysim::buildModel(*scene);
-      for (const std::string& engine : engines) {
-        RefineRow row{scene->name,
-                      scene->cloth_material ? mysim::bendingModelName(scene->cloth_material->bending)
-                                            : "none (chain)",
-                      engine, "", resolution, model.particleCount()};
-        auto record = registry->run(engine, model, config);
-        if (!record) {
-          std::cerr << path << " at resolution " << resolution << ", " << engine << ": "
-                    << record.error().message << '\n';
-          row.status = "refused";
-          ++failures;
-          rows.push_back(row);
-          continue;
-        }
-        row.status = record->status();
-        row.wall_seconds = record->wall_seconds;
-        if (record->blowup) {
-          std::cerr << path << " at resolution " << resolution << ", " << engine << ": "
-                    << record->status() << " at t = " << record->blowup->time << " s ("
-                    << record->blowup->check << ")\n";
-          ++failures;
-        } else if (!record->frames.empty()) {
-          const EngineMetrics m = engineMetrics(model, {engine, *record});
-          for (const MetricInfo* info : refinedMetrics()) {
-            if (auto v = metricValue(m, info->name)) row.values[info->name] = *v;
-          }
-          if (m.closed_form && cantileverReference(model)) {
-            row.reference = m.closed_form->exact;
-            row.reference_quantity = "tip_drop";
-          }
-          if (auto cable = closedFormReference(*scene, model, "sag_lowest")) {
-            row.reference = *cable->value;
-            row.reference_quantity = "sag_lowest";
-          }
-        }
-        std::cout << row.scene << " (" << row.bending << ") at " << resolution << " cells, "
-                  << engine << ": " << row.status;
-        for (const auto& [name, value] : row.values) std::cout << ", " << name << " " << number(value);
-        std::cout << " (" << row.wall_seconds << " s)\n";
-        rows.push_back(row);
-      }
-    }
+  RefineSettings settings;
+  settings.scenes = o.scenes;
+  settings.resolutions = o.resolutions;
+  settings.engines = splitList(o.engines);
+  settings.timing = o.timing;
+  settings.jobs = o.jobs;
+  if (!sortedDistinct(settings.resolutions)) return kBadInput;
+  const auto rows = runRefinement(*registry, settings);
+  if (!rows) {
+    std::cerr << "error: " << rows.error() << '\n';
+    return kBadInput;
   }
-
-  // Per scene, engine and quantity: the estimate from the completed resolutions.
-  std::ostringstream estimates;
-  estimates << csvLine({"scene", "bending", "engine", "quantity", "unit", "finest_resolution", "finest",
-                        "observed_order", "extrapolated_limit", "finest_vs_limit_rel",
-                        "reference", "finest_vs_reference_rel", "note"})
-            << '\n';
-  std::map<std::pair<std::string, std::string>, std::vector<const RefineRow*>> series;
-  for (const RefineRow& r : rows) {
-    if (r.status == "ok") series[{r.scene, r.engine}].push_back(&r);
-  }
-  std::cout << "\nconvergence (the last three resolutions; Richardson limit):\n";
-  for (const auto& [key, runs] : series) {
-    for (const MetricInfo* info : refinedMetrics()) {
-      const std::string& name = info->name;
-      std::vector<int> n;
-      std::vector<double> q;
-      for (const RefineRow* r : runs) {
-        if (auto v = r->values.find(name); v != r->values.end()) {
-          n.push_back(r->resolution), q.push_back(v->second);
-        }
-      }
-      if (q.empty()) continue;
-      const RefinementEstimate e = estimateRefinement(n, q);
-      const RefineRow& finest = *runs.back();
-      const double reference = finest.reference_quantity == name ? finest.reference : NAN;
-      const double vs_limit = e.limit && *e.limit != 0.0 ? (q.back() - *e.limit) / *e.limit : NAN;
-      const double vs_reference = std::isfinite(reference) ? (q.back() - reference) / reference : NAN;
-      estimates << csvLine({key.first, finest.bending, key.second, name, info->unit,
-                            std::to_string(n.back()), number(q.back()),
-                            e.order ? number(*e.order) : "", e.limit ? number(*e.limit) : "",
-                            number(vs_limit), number(reference), number(vs_reference), e.reason})
-                << '\n';
-      std::cout << "  " << key.first << " " << key.second << " " << name << " [" << info->unit
-                << "]: finest " << number(q.back()) << ", order "
-                << (e.order ? number(*e.order) : "- (" + e.reason + ")") << ", limit "
-                << (e.limit ? number(*e.limit) : "-")
-                << (std::isfinite(vs_reference)
-                        ? ", finest vs closed form " + number(100.0 * vs_reference) + " %"
-                        : "")
-                << '\n';
-    }
-  }
-  std::ostringstream table;
-  std::vector<std::string> header{"scene", "bending", "engine", "resolution", "particles",
-                                  "status", "wall_seconds"};
-  for (const MetricInfo* info : refinedMetrics()) header.push_back(info->name);
-  header.push_back("closed_form_value");
-  table << csvLine(header) << '\n';
-  for (const RefineRow& r : rows) {
-    std::vector<std::string> fields{r.scene, r.bending, r.engine, std::to_string(r.resolution),
-                                    std::to_string(r.particles), r.status, number(r.wall_seconds)};
-    for (const MetricInfo* info : refinedMetrics()) {
-      auto v = r.values.find(info->name);
-      fields.push_back(v == r.values.end() ? "" : number(v->second));
-    }
-    fields.push_back(number(r.reference));
-    table << csvLine(fields) << '\n';
-  }
+  const int failures = printRuns(*rows);
+  const std::vector<RefineEstimateRow> estimates = refinementEstimates(*rows);
+  printEstimates(estimates);
   static const FolderKind kind{"refinement folder",
                                {"refine.csv", "refine_estimates.csv", "refine.csv.command"}};
   auto written = writeFolderWhole(o.out, kind, [&](const std::string& staging)
                                                    -> std::expected<void, std::string> {
-    for (const auto& [file, text] :
-         {std::pair{"refine.csv", table.str()}, std::pair{"refine_estimates.csv", estimates.str()}}) {
+    for (const auto& [file, text] : {std::pair{"refine.csv", refineTableCsv(*rows)},
+                                     std::pair{"refine_estimates.csv", refineEstimatesCsv(estimates)}}) {
       const std::string body = text;
       if (auto ok = writeFileAtomically(staging + "/" + file, [&](std::ostream& out) { out << body; });
           !ok) {
@@ -240,6 +137,10 @@ void addRefineCommand(CLI::App& app, int& exit_code) {
   addEnginesFileOption(cmd, options->engines_files);
   cmd->add_option("--out", options->out, "Output directory")->capture_default_str();
   addTimingOptions(cmd, options->timing, 1);
+  cmd->add_option("--jobs", options->jobs,
+                  "Runs side by side (default: every free core); wall times are kept with the "
+                  "jobs they were measured beside, --jobs 1 times each run alone")
+      ->check(CLI::Range(1, 1024));
   cmd->callback([options, &exit_code] { exit_code = refine(*options); });
 }
 

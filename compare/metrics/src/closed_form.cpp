@@ -318,9 +318,8 @@ std::string notAChain(const mysim::Model& model, const mysim::RunRecord& run) {
   }
   if (model.springs.empty()) return "free particles without springs: no closed form";
   if (isIndexOrderedPath(model)) return "a chain of unequal springs or unequal masses";
-  return "no closed form for this system (the suite has them for the circle, a uniform chain "
-         "hanging, between two pins, as a pendulum, an oscillator or a taut line, and a clamped "
-         "strip with hinge bending)";
+  return "the suite has closed forms only for the circle, a uniform chain (hanging, between two "
+         "pins, a pendulum, an oscillator, a taut line) and a clamped strip with hinge bending";
 }
 
 // The closed forms of a uniform chain without gravity: the oscillator and the taut chain.

@@ -75,6 +75,20 @@ void printNoClosedForm(std::ostream& out, const std::vector<EngineMetrics>& engi
   }
 }
 
+// Under the per-engine table: why closed_form_error is blank, and the runs that did not end well.
+void printRunNotes(std::ostream& out, const std::vector<EngineMetrics>& engines) {
+  printNoClosedForm(out, engines);
+  for (const EngineMetrics& m : engines) {
+    if (m.blew_up) {
+      out << "  " << m.engine << ": "
+          << (m.status == "blowup" ? "BLOW-UP" : "STOPPED (" + m.status + ")")
+          << " at t = " << m.blowup_time << " s\n";
+    } else if (m.status != "ok") {
+      out << "  " << m.engine << ": " << m.status << "\n";
+    }
+  }
+}
+
 }  // namespace
 
 void printComparison(std::ostream& out, const Comparison& c) {
@@ -108,16 +122,7 @@ void printComparison(std::ostream& out, const Comparison& c) {
     }
     out << '\n';
   }
-  printNoClosedForm(out, c.engines);
-  for (const EngineMetrics& m : c.engines) {
-    if (m.blew_up) {
-      out << "  " << m.engine << ": "
-          << (m.status == "blowup" ? "BLOW-UP" : "STOPPED (" + m.status + ")")
-          << " at t = " << m.blowup_time << " s\n";
-    } else if (m.status != "ok") {
-      out << "  " << m.engine << ": " << m.status << "\n";
-    }
-  }
+  printRunNotes(out, c.engines);
   if (c.pairs.empty()) return;
   std::size_t pair_width = 8;
   for (const PairMetrics& p : c.pairs) pair_width = std::max(pair_width, p.a.size() + p.b.size() + 3);

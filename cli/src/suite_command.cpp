@@ -8,6 +8,8 @@
 #include "compare/io/atomic_file.h"
 #include "compare/studies/gate.h"
 #include "compare/studies/gate_report_formats.h"
+#include "compare/studies/parallel_jobs.h"
+#include "mysim/thread_budget.h"
 #include "data_dir.h"
 
 namespace springcheck {
@@ -20,6 +22,9 @@ struct SuiteOptions {
   Timing timing;
   std::string tolerances;  // also gate the runs against this file
   std::string gate_json;   // and write the gate's results here
+  // Scenes side by side (0: every free core). 1 by default: each run then has the machine to
+  // itself and its wall time in the tables means what it says.
+  int jobs = 1;
 };
 
 // The gate on the suite's runs (a scene run in every engine its checks name is not run again).
@@ -43,6 +48,40 @@ int gateSuite(const EngineRegistry& registry, const Tolerances& tolerances,
   }
   const bool hidden = code == kOk || code == kBlowUp || code == kSolverLimit;
   return !report->passed() && hidden ? kFailure : code;
+}
+
+// One scene's comparison and its name, or why it could not be made (a scene file that does not
+// load, an unknown engine).
+struct SceneComparison {
+  std::string name;
+  Comparison comparison;
+};
+using SceneOutcome = std::expected<SceneComparison, std::string>;
+
+// Every scene in every engine, --jobs scenes side by side (each mysim run on its share of the
+// cores), in the files' order.
+std::vector<SceneOutcome> compareScenes(const EngineRegistry& registry,
+                                        const std::vector<std::string>& files,
+                                        const SuiteOptions& o) {
+  const int jobs = jobCount(o.jobs, files.size());
+  Timing timing = o.timing;
+  if (timing.threads == 0 && jobs > 1) timing.threads = std::max(1, mysim::availableCores() / jobs);
+  std::vector<SceneOutcome> outcomes(files.size(), std::unexpected(std::string()));
+  forEachInParallel(files.size(), jobs, [&](std::size_t k) {
+    auto scene = registry.loadScene(files[k]);
+    if (!scene) {
+      outcomes[k] = std::unexpected(scene.error());
+      return;
+    }
+    auto comparison = compareScene(registry, *scene, registry.names(), timing);
+    if (!comparison) {
+      outcomes[k] = std::unexpected(comparison.error());
+      return;
+    }
+    comparison->jobs = jobs;
+    outcomes[k] = SceneComparison{scene->name, std::move(*comparison)};
+  });
+  return outcomes;
 }
 
 // Every scene under a directory in every engine that takes it (every engine of the registry,
@@ -70,34 +109,31 @@ int runSuite(const SuiteOptions& o) {
     }
     tolerances = std::move(*loaded);
   }
+  std::vector<SceneOutcome> outcomes = compareScenes(*registry, *files, o);
   int code = kOk;
   ComparisonCache done;
-  for (const std::string& file : *files) {
-    auto scene = registry->loadScene(file);
-    if (!scene) {
-      std::cerr << "error: " << scene.error() << '\n';
+  for (std::size_t k = 0; k < files->size(); ++k) {
+    SceneOutcome& outcome = outcomes[k];
+    if (!outcome) {
+      std::cerr << "error: " << outcome.error() << '\n';
       code = kBadInput;
       continue;
     }
-    auto comparison = compareScene(*registry, *scene, registry->names(), o.timing);
-    if (!comparison) {
-      std::cerr << "error: " << comparison.error() << '\n';
-      code = kBadInput;
-      continue;
-    }
-    printComparison(std::cout, *comparison);
-    if (!comparison->failed.empty() && code == kOk) code = kEngineFailed;
-    if (auto written = writeComparison(o.out + "/" + scene->name, *comparison); !written) {
+    Comparison& comparison = outcome->comparison;
+    printComparison(std::cout, comparison);
+    if (!comparison.failed.empty() && code == kOk) code = kEngineFailed;
+    if (auto written = writeComparison(o.out + "/" + outcome->name, comparison); !written) {
       std::cerr << "error: " << written.error() << '\n';
       code = kFailure;
     }
-    for (const EngineMetrics& m : comparison->engines) {
+    for (const EngineMetrics& m : comparison.engines) {
       // The seed scenes run at the seed's own (stable) settings: a blow-up there is a bug.
       if (m.status != "ok" && code == kOk) code = exitCodeForStatus(m.status);
     }
     std::cout << '\n';
     std::error_code ec;
-    if (tolerances) done.emplace(std::filesystem::weakly_canonical(file, ec).string(), *comparison);
+    const std::string key = std::filesystem::weakly_canonical((*files)[k], ec).string();
+    if (tolerances) done.emplace(key, std::move(comparison));  // printed and written: the gate's now
   }
   if (tolerances) code = gateSuite(*registry, *tolerances, done, o, code);
   std::cout << "results in " << o.out << "/<scene>/\n";
@@ -119,6 +155,11 @@ void addSuiteCommand(CLI::App& app, int& exit_code) {
                     "name its own engines_file); the exit code says whether they held");
   suite->add_option("--gate-json", options->gate_json,
                     "With --tolerances: also write every check's result to this JSON file");
+  suite->add_option("--jobs", options->jobs,
+                    "Scenes run side by side (0: every free core); the tables keep each run's "
+                    "wall time, measured beside the others")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
   suite->callback([options, &exit_code] { exit_code = runSuite(*options); });
 }
 

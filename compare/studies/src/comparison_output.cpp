@@ -197,6 +197,7 @@ json comparisonJson(const Comparison& c) {
   // The command that made it (the report prints it under its figures); null from the library.
   j["command"] = invocation().empty() ? json() : json(invocation());
   j["energy_reference"] = c.energy_reference ? json(c.runs[*c.energy_reference].engine) : json();
+  j["jobs"] = c.jobs;
   for (std::size_t r = 0; r < c.engines.size(); ++r) {
     json e = metricsJson(c.engines[r]);
     // Where its run files are, and what stepped it (the scene's integrator for plain "mysim").

@@ -327,8 +327,9 @@ std::expected<int, std::string> runSweep(const EngineRegistry& registry, const S
   std::vector<std::optional<CaseRun>> runs(todo.size());
   std::mutex mutex;
   int finished = 0;
-  forEachInParallel(todo.size(), jobs, [&](std::size_t k) {
-    rows[k] = runCase(registry, spec, todo[k], *references, options, jobs, runs[k]);
+  const int case_jobs = options.repeats > 1 ? 1 : jobs;  // timed: the first round is a repeat
+  forEachInParallel(todo.size(), case_jobs, [&](std::size_t k) {
+    rows[k] = runCase(registry, spec, todo[k], *references, options, case_jobs, runs[k]);
     std::lock_guard<std::mutex> lock(mutex);
     out << sweepLine(rows[k]) << '\n' << std::flush;
     ++finished;
@@ -337,7 +338,7 @@ std::expected<int, std::string> runSweep(const EngineRegistry& registry, const S
   out.close();
   std::vector<SweepRow*> row_pointers;
   for (SweepRow& row : rows) row_pointers.push_back(&row);
-  retimeRows(registry, runs, options, jobs, row_pointers);
+  retimeRows(registry, runs, options, case_jobs, row_pointers);
   for (SweepRow& row : rows) kept.push_back(std::move(row));
   if (auto written = writeSweepTable(out_csv, kept); !written) {
     return std::unexpected(written.error());

@@ -28,6 +28,9 @@ struct Comparison {
   // itself mostly shows the damping: the one stepped by the highest-order fixed-step integrator of
   // the catalogue (RK4 among today's), if the comparison has it.
   std::optional<std::size_t> energy_reference;
+  // Scenes compared side by side (suite --jobs) while these runs were timed: above 1, each wall
+  // time was measured beside other runs.
+  int jobs = 1;
 };
 
 // Runs the engines; an engine that refuses the scene is listed in `refused`, one that fails in

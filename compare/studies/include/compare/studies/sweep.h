@@ -13,11 +13,13 @@ namespace springcheck {
 
 struct SweepOptions {
   int jobs = 0;  // runs at once (jobCount: 0 for every free core)
-  // Timing (docs/timing.md). The cases run `jobs` at a time for their results; with repeats > 1
-  // they are then timed one at a time (cases run side by side slow each other down through the
+  // Timing (docs/timing.md). With repeats 1 the cases run `jobs` at a time. With repeats > 1
+  // they are timed one at a time (cases run side by side slow each other down through the
   // caches and memory they share: up to 1.8x on a 2-core VM), in `repeats` rounds over all cases
   // rather than back to back, on `threads` OpenMP threads (0: every core), following the load
-  // unless fixed_threads. Wall time: the fastest of the rounds.
+  // unless fixed_threads; the first round, which gives the results, is then one of the timed
+  // ones (a round side by side for the results and `repeats` timed ones after it cost half a
+  // round more). The references run `jobs` at a time either way. Wall time: the fastest round.
   int repeats = 1;
   int threads = 0;
   bool fixed_threads = false;

@@ -21,10 +21,12 @@ def page(timings_json):
         names = [s["name"] for s in stages][::-1]
         seconds = [s["seconds"] for s in stages][::-1]
         ax.barh(names, seconds, color="#4c72b0")
-        for y, v in enumerate(seconds):
-            ax.text(v, y, f" {v:.0f} s ({100 * v / total:.0f} %)", va="center", fontsize=7)
+        work = [s for s in stages][::-1]
+        for y, (v, s) in enumerate(zip(seconds, work)):
+            counts = f", {s['runs']} runs, {s['steps']:.2g} steps" if "runs" in s and s["runs"] else ""
+            ax.text(v, y, f" {v:.0f} s ({100 * v / total:.0f} %){counts}", va="center", fontsize=7)
         ax.set_xlabel("wall time [s], one run of each stage")
-        ax.set_xlim(0, max(seconds) * 1.3 if seconds else 1)
+        ax.set_xlim(0, max(seconds) * 1.8 if seconds else 1)
         ax.grid(True, axis="x", alpha=0.3)
         return []
 
@@ -32,6 +34,8 @@ def page(timings_json):
              + (f"; longest stage {heaviest['name']} ({heaviest['seconds']:.0f} s)" if heaviest else ""))
     caption = (f"On {where}. Each stage of scripts/run-suite.sh, timed as it ran, in order from the top; the total also "
                "counts the STREAM probe. This report, drawn after the table was written, adds its own time, "
-               "which the job prints at its end and writes to out/timings.json. Stages that time runs (the "
-               "suite, the sweeps) ran alone.")
+               "which the job prints at its end and writes to out/timings.json. Beside each bar: the stage's work "
+               "(simulation runs and their steps), which scripts/check-main-job-work.py holds to its record. "
+               "Stages whose times a page draws (the sweeps, the trade) time each run alone; the suite, the "
+               "stability maps and refine run side by side on every core.")
     return Page("timings", title, caption, draw)

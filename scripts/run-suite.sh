@@ -20,18 +20,27 @@ OUT=${SPRINGCHECK_OUT:-out}
 mkdir -p "$OUT"
 start=$(date +%s.%N)
 
-# stage NAME COMMAND...: runs the command, prints and records its wall time; its exit code is
-# the command's, so `stage ... || [ $? -eq 3 ]` keeps working.
-stage_names=() stage_seconds=()
+# stage NAME COMMAND...: runs the command, prints and records its wall time and its work (the
+# runs and steps every springcheck it started reports through SPRINGCHECK_WORK_FILE: the budget is
+# held by these counts, scripts/check-main-job-work.py); its exit code is the command's, so
+# `stage ... || [ $? -eq 3 ]` keeps working.
+stage_names=() stage_seconds=() stage_runs=() stage_steps=()
+work_dir=$(mktemp -d)
+trap 'rm -rf "$work_dir"' EXIT
 stage() {
   local name=$1 t0 rc=0
   shift
+  export SPRINGCHECK_WORK_FILE="$work_dir/${#stage_names[@]}"
+  : > "$SPRINGCHECK_WORK_FILE"
   t0=$(date +%s.%N)
   "$@" || rc=$?
-  local seconds
+  local seconds work
   seconds=$(awk -v a="$(date +%s.%N)" -v b="$t0" "BEGIN { print a - b }")
+  work=$(sed 's/[^0-9 ]//g' "$SPRINGCHECK_WORK_FILE" | awk '{ r += $1; s += $2 } END { print r + 0, s + 0 }')
+  unset SPRINGCHECK_WORK_FILE
   stage_names+=("$name") stage_seconds+=("$seconds")
-  printf 'stage %-22s %7.1f s\n' "$name" "$seconds" >&2
+  stage_runs+=("${work% *}") stage_steps+=("${work#* }")
+  printf 'stage %-30s %7.1f s %6d runs %12d steps\n' "$name" "$seconds" "${work% *}" "${work#* }" >&2
   return "$rc"
 }
 # The machine, for the report's last page: cores and the STREAM triad (Google Benchmark's
@@ -117,7 +126,8 @@ write_timings() {
   {
     printf '{\n  "stages": [\n'
     for k in "${!stage_names[@]}"; do
-      printf '    {"name": "%s", "seconds": %.2f}%s\n' "${stage_names[$k]}" "${stage_seconds[$k]}" \
+      printf '    {"name": "%s", "seconds": %.2f, "runs": %d, "steps": %d}%s\n' "${stage_names[$k]}" \
+        "${stage_seconds[$k]}" "${stage_runs[$k]}" "${stage_steps[$k]}" \
         "$([ "$k" -lt $((${#stage_names[@]} - 1)) ] && echo ,)"
     done
     printf '  ],\n  "total_seconds": %.2f,\n' "$total"

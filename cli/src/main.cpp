@@ -5,6 +5,7 @@
 
 #include "commands.h"
 #include "compare/engines/interrupts.h"
+#include "compare/engines/work_count.h"
 #include "compare/io/invocation.h"
 #include "springcheck_commit.h"
 
@@ -50,6 +51,11 @@ int main(int argc, char** argv) {
     // Errors are values everywhere we know of; this is the last line for one we do not.
     std::cerr << "error: " << e.what() << '\n';
     return springcheck::kFailure;
+  }
+  // The work done, for a caller that holds a budget by it (scripts/run-suite.sh's stages).
+  if (std::string error; !springcheck::reportWorkDone(error)) {
+    std::cerr << "error: " << error << '\n';
+    return exit_code == springcheck::kOk ? springcheck::kFailure : exit_code;
   }
   return exit_code;
 }

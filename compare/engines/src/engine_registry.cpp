@@ -1,4 +1,5 @@
 #include "compare/engines/engine_registry.h"
+#include "compare/engines/work_count.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -217,13 +218,17 @@ std::expected<mysim::RunRecord, EngineError> EngineRegistry::run(const std::stri
   if (auto limit = limitError(model, config)) return std::unexpected(*limit);
   const auto& [engine, resolved_config] = *resolved;
   auto once = [&]() -> std::expected<mysim::RunRecord, EngineError> {
-    if (engine->run) return engine->run(model, resolved_config);
-    auto instance = engine->build(model, resolved_config);
-    if (!instance) return std::unexpected(instance.error());
-    mysim::RunRecord r = mysim::simulate(*instance->system, *instance->stepper, instance->start,
-                                         resolved_config.run);
-    r.integrator = instance->integrator;
-    r.notes = instance->notes;
+    std::expected<mysim::RunRecord, EngineError> r = [&]() -> decltype(r) {
+      if (engine->run) return engine->run(model, resolved_config);
+      auto instance = engine->build(model, resolved_config);
+      if (!instance) return std::unexpected(instance.error());
+      mysim::RunRecord made = mysim::simulate(*instance->system, *instance->stepper,
+                                              instance->start, resolved_config.run);
+      made.integrator = instance->integrator;
+      made.notes = instance->notes;
+      return made;
+    }();
+    if (r) countRun(r->steps);  // a refusal stepped nothing
     return r;
   };
   auto record = once();

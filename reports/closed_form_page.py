@@ -1,5 +1,6 @@
 """Every engine against every closed form the suite's scenes have, a user's engine among them."""
 import json
+import textwrap
 
 from report_style import Page
 
@@ -67,16 +68,20 @@ def draw(fig, ctx):
                      loc="upper center", cellLoc="center")
     table.auto_set_font_size(False)
     table.set_fontsize(8)
+    table.auto_set_column_width([0, 1])  # scene and closed-form names are never cut
     table.scale(1, 1.6)
     for (r, _), cell in table.get_celld().items():
         cell.set_edgecolor("0.85")
         if r == 0:
             cell.set_text_props(weight="bold")
             cell.set_facecolor("#eeeeee")
+    # Below the table, not in the caption: the scenes without a closed form and why.
+    without = textwrap.wrap(" ".join(without_lines()), 190)
+    fig.text(0.06, 0.29, "\n".join(without), va="top", fontsize=7.5, color="0.15")
     stepped = f"mysim: the integrator each scene names ({', '.join(sorted(STEPPERS))} here). " if STEPPERS else ""
     return [stepped + "'(motion left)': the nodes still moved by a tenth or more of the error over the run's last tenth, "
             "so the error is the motion left at the end, the same for every engine, not its accuracy. "
-            "'blew up': no error is measured on a run that stopped early."] + without_lines()
+            "'blew up': no error is measured on a run that stopped early."]
 
 
 def page():

@@ -32,7 +32,7 @@ def page(timings_json):
 
     title = (f"Main job: {total:.0f} s after its build"
              + (f"; longest stage {heaviest['name']} ({heaviest['seconds']:.0f} s)" if heaviest else ""))
-    caption = (f"On {where}. Each stage of scripts/run-suite.sh, timed as it ran, in order from the top; the total also "
+    caption = (f"On {where}. Each stage of scripts/main-job.sh (what scripts/run-suite.sh runs after its build), timed as it ran, in order from the top; the total also "
                "counts the STREAM probe. This report, drawn after the table was written, adds its own time, "
                "which the job prints at its end and writes to out/timings.json. Beside each bar: the stage's work "
                "(simulation runs and their steps), which scripts/check-main-job-work.py holds to its record. "

@@ -262,6 +262,37 @@ std::expected<std::map<int, SweepRow>, std::string> rowsSoFar(const std::string&
   return by_id;
 }
 
+// This shard's cases that have no row yet. A row is its case's only if every parameter column
+// agrees (the table, or its journal, may come from another spec): else the table is not this
+// sweep's, and that is the error.
+std::expected<std::vector<SweepCase>, std::string> casesToRun(const SweepSpec& spec,
+                                                              const std::map<int, SweepRow>& so_far,
+                                                              const std::string& out_csv,
+                                                              const SweepOptions& options) {
+  std::vector<SweepCase> todo;
+  for (const SweepCase& c : expandSweep(spec)) {
+    if (c.id % options.shard_count != options.shard_index) continue;
+    auto done = so_far.find(c.id);
+    if (done == so_far.end()) {
+      todo.push_back(c);
+      continue;
+    }
+    SweepRow wanted;
+    wanted.c = c;
+    const auto mine = sweepRowFields(wanted), theirs = sweepRowFields(done->second);
+    for (int k = 0; k < kSweepParameterColumns; ++k) {
+      if (mine[k] != theirs[k]) {
+        return std::unexpected(out_csv + ": case " + std::to_string(c.id) + " has " +
+                               sweepColumns()[k] + " " + theirs[k] + " in the table but " +
+                               mine[k] + " in " + spec.source +
+                               ": the table is another sweep's (--fresh starts it over, or "
+                               "give another --out)");
+      }
+    }
+  }
+  return todo;
+}
+
 }  // namespace
 
 // One sweep writes a table at a time: a second one would read the first's journal as its own
@@ -292,28 +323,9 @@ std::expected<int, std::string> runSweep(const EngineRegistry& registry, const S
   }
   auto so_far = rowsSoFar(out_csv, options.resume);
   if (!so_far) return std::unexpected(so_far.error());
-  std::vector<SweepCase> todo;
-  for (const SweepCase& c : expandSweep(spec)) {
-    if (c.id % options.shard_count != options.shard_index) continue;
-    if (auto done = so_far->find(c.id); done != so_far->end()) {
-      // A row is this case's only if every parameter column agrees (the table, or its journal,
-      // may come from another spec): else the table is not this sweep's.
-      SweepRow wanted;
-      wanted.c = c;
-      const auto mine = sweepRowFields(wanted), theirs = sweepRowFields(done->second);
-      for (int k = 0; k < kSweepParameterColumns; ++k) {
-        if (mine[k] != theirs[k]) {
-          return std::unexpected(out_csv + ": case " + std::to_string(c.id) + " has " +
-                                 sweepColumns()[k] + " " + theirs[k] + " in the table but " +
-                                 mine[k] + " in " + spec.source +
-                                 ": the table is another sweep's (--fresh starts it over, or "
-                                 "give another --out)");
-        }
-      }
-      continue;
-    }
-    todo.push_back(c);
-  }
+  auto cases = casesToRun(spec, *so_far, out_csv, options);
+  if (!cases) return std::unexpected(cases.error());
+  const std::vector<SweepCase>& todo = *cases;
   std::vector<SweepRow> kept;
   for (auto& [id, row] : *so_far) kept.push_back(std::move(row));
   const int jobs = jobCount(options.jobs, todo.size());

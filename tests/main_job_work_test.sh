@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# The main job whole (scripts/main-job.sh) on the test build: it must end with exit 0 (every gate
+# check held, the report written), and each stage's work, in runs and steps, must stay within
+# 20 % of its record (scripts/main-job-work.json; scripts/check-main-job-work.py): the job's
+# budget held by counts, which no machine's speed or load changes.
+# Usage: main_job_work_test.sh SOURCE_DIR BUILD_DIR WORK_DIR
+set -uo pipefail
+src=$1 build=$2 out=$3
+rm -rf "$out" "$out.log"
+SPRINGCHECK_BUILD="$build" SPRINGCHECK_OUT="$out" "$src/scripts/main-job.sh" > "$out.log" 2>&1
+rc=$?
+if [ "$rc" -ne 0 ]; then
+  tail -40 "$out.log"
+  echo "FAIL: the main job exited $rc (log: $out.log)"
+  exit 1
+fi
+grep '^stage ' "$out.log"
+[ -s "$out/report/report.pdf" ] || { echo "FAIL: no report at $out/report/report.pdf"; exit 1; }
+python3 "$src/scripts/check-main-job-work.py" "$out/timings.json" "$src/scripts/main-job-work.json"

@@ -33,6 +33,8 @@ def rows_of(m):
                 errors[e["engine"]] = ("blew up", False)
             elif e.get("no_closed_form"):
                 why_not = e["no_closed_form"]
+        for r in j.get("refused", []):
+            errors.setdefault(r["engine"], ("refused", False))
         if quantity is not None:
             rows.append((c["scene"], quantity, exact, errors))
         elif why_not:
@@ -60,15 +62,18 @@ def draw(fig, ctx):
         for e in engines:
             if e in errors:
                 value, floor = errors[e]
-                line.append(value if isinstance(value, str) else f"{value:.2g}" + (" (motion left)" if floor else ""))
+                line.append(value if isinstance(value, str) else f"{value:.2g}" + (" *" if floor else ""))
             else:
                 line.append("")
         cells.append(line)
     table = ax.table(cellText=cells, colLabels=["scene", "closed form", "exact value", "error unit"] + engines,
                      loc="upper center", cellLoc="center")
     table.auto_set_font_size(False)
-    table.set_fontsize(8)
-    table.auto_set_column_width([0, 1])  # scene and closed-form names are never cut
+    table.set_fontsize(7.5)
+    # Widths as fractions of the page's table: the names never cut, the engines share the rest.
+    fixed = [0.16, 0.19, 0.085, 0.075]
+    for (r, col), cell in table.get_celld().items():
+        cell.set_width(fixed[col] if col < len(fixed) else (1 - sum(fixed)) / max(len(engines), 1))
     table.scale(1, 1.6)
     for (r, _), cell in table.get_celld().items():
         cell.set_edgecolor("0.85")
@@ -79,9 +84,9 @@ def draw(fig, ctx):
     without = textwrap.wrap(" ".join(without_lines()), 190)
     fig.text(0.06, 0.29, "\n".join(without), va="top", fontsize=7.5, color="0.15")
     stepped = f"mysim: the integrator each scene names ({', '.join(sorted(STEPPERS))} here). " if STEPPERS else ""
-    return [stepped + "'(motion left)': the nodes still moved by a tenth or more of the error over the run's last tenth, "
+    return [stepped + "'*': the nodes still moved by a tenth or more of the error over the run's last tenth (motion left), "
             "so the error is the motion left at the end, the same for every engine, not its accuracy. "
-            "'blew up': no error is measured on a run that stopped early."]
+            "'blew up': no error is measured on a run that stopped early; 'refused': the engine cannot run the scene (its table says why)."]
 
 
 def page():

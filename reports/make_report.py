@@ -32,6 +32,9 @@ class Context:
         names = [e["name"] for c in manifest["comparisons"] for e in c["engines"]]
         self.styles = StyleTable(manifest.get("series", []), (n for n in names if not n.startswith("mysim")))
         self.numbers = {}
+        # What pages drew that the data must carry (a Richardson limit, an order): written beside
+        # the report as claims.json, where a test holds each to the evidence rule.
+        self.claims = []
 
     def page_of(self, key):
         number = self.numbers.get(key)
@@ -84,6 +87,8 @@ def main():
             pdf.savefig(fig)
             plt.close(fig)
     os.replace(tmp_path, pdf_path)  # whole or not at all
+    with open(os.path.join(args.out, "claims.json"), "w") as f:
+        json.dump(ctx.claims, f, indent=1)
     print(f"report: {pdf_path} and {len(pages)} PNGs in {args.out}")
 
 

@@ -42,10 +42,18 @@ def page(scene, rows, estimates, command):
                 if not est:
                     continue
                 unit = est["unit"]
+                # The table holds a limit and an order only where the evidence rule allows them
+                # (refine_estimates.csv's verdict); the page draws nothing more than the table says.
                 if est["extrapolated_limit"]:
                     ax.axhline(float(est["extrapolated_limit"]), color=style["color"], linestyle=":", linewidth=1)
+                    ctx.claims.append({"page": f"refine_{scene}", "kind": "limit", "engine": engine,
+                                       "quantity": quantity, "resolutions": est.get("resolutions", ""),
+                                       "observed_order": est["observed_order"],
+                                       "expected_order": est.get("expected_order", ""),
+                                       "verdict": est.get("verdict", "")})
+                counted = (est.get("verdict") or "").startswith("a count")
                 orders.append(f"{engine}: " + (f"order {float(est['observed_order']):.2f}" if est["observed_order"]
-                                                else "no order"))
+                                                else "a count (no order)" if counted else "not converged"))
                 if est["reference"] and not any(n.startswith("closed form") for n in notes):
                     ax.axhline(float(est["reference"]), color="black", linewidth=1.2,
                                label=REFERENCES.get(quantity, "closed form"))
@@ -77,12 +85,22 @@ def page(scene, rows, estimates, command):
             notes.append("no black line, as " + "; ".join(why_not))
         return ["; ".join(dict.fromkeys(notes)) + "."] if notes else []
 
-    caption = (f"{scene}{bent} at each resolution. Dotted: the Richardson limit of the "
-               "last three resolutions (only where their differences shrink); black: the closed form. "
-               "Above each panel: each engine's observed order ('no order': not converging at these "
-               "resolutions).")
-    return Page(f"refine_{scene}", f"Does {scene} converge as its mesh is refined?", caption, draw,
-                command=command)
+    verdicts = [e for e in estimates if e["quantity"] in quantities]
+    converged = [e for e in verdicts if (e.get("verdict") or "").startswith("converged")]
+    expected = sorted({e["expected_order"] for e in verdicts if e.get("expected_order")})
+    if verdicts and len(converged) == len(verdicts):
+        title = f"{scene} converges as its mesh is refined" + (f" (expected order {', '.join(expected)})" if expected else "")
+    elif not converged:
+        title = f"{scene}: not converged at {', '.join(dict.fromkeys(r['resolution'] for r in rows))} cells"
+    else:
+        title = f"{scene}: {len(converged)} of {len(verdicts)} series converged at these resolutions"
+    why_not = sorted({e["verdict"].split(": ", 1)[-1] for e in verdicts if e not in converged and e.get("verdict")})
+    caption = (f"{scene}{bent} at each resolution. Dotted: the Richardson limit, drawn only with the evidence "
+               "for one (four or more resolutions whose last two triples give agreeing orders, or three at the "
+               "discretisation's expected order" + (f", {' and '.join(expected)} here" if expected else ": none here")
+               + ", within 30 %); black: the closed form. Above each panel: each engine's observed order, or "
+               "'not converged'" + (" (" + "; ".join(why_not[:3]) + ")" if why_not else "") + ".")
+    return Page(f"refine_{scene}", title, caption, draw, command=command)
 
 
 def pages(m):

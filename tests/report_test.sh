@@ -69,6 +69,17 @@ grep -q '"user_cloth"' "$OUT/report/manifest.json" || fail "the manifest does no
 grep -q '"commit"' "$OUT/report/manifest.json" || fail "the manifest has no stamp"
 echo "report: $pages pages, each page present"
 
+# Every limit a page drew has the evidence for it (tests/report_claims_check.py), and the check
+# refuses one that has not: a limit from three resolutions with no expected order to hold it to.
+python3 tests/report_claims_check.py "$OUT/report/claims.json" || fail "a page drew a limit without evidence"
+cat > "$OUT/unevidenced_claims.json" <<'JSON'
+[{"page": "refine_flex", "kind": "limit", "engine": "mysim", "quantity": "tip_drop",
+  "resolutions": "4 8 16", "observed_order": "0.88", "expected_order": "", "verdict": "converged"}]
+JSON
+if python3 tests/report_claims_check.py "$OUT/unevidenced_claims.json" >/dev/null; then
+  fail "the claims check passed a limit from three resolutions with no expected order"
+fi
+
 # A folder with a single comparison: the report still comes, and says what makes the rest.
 mkdir -p "$OUT/partial/suite"
 cp -r "$OUT/suite/user_cloth" "$OUT/partial/suite/"

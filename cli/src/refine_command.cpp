@@ -66,13 +66,14 @@ int printRuns(const std::vector<RefineRow>& rows) {
 }
 
 void printEstimates(const std::vector<RefineEstimateRow>& estimates) {
-  std::cout << "\nconvergence (the last three resolutions; Richardson limit):\n";
+  std::cout << "\nconvergence (a Richardson limit only where the evidence allows one: four or more "
+               "resolutions whose last two triples agree, or three at the expected order):\n";
   for (const RefineEstimateRow& e : estimates) {
     const double vs_reference = e.finestVsReference();
+    const bool quote = e.verdict.converged;
     std::cout << "  " << e.scene << " " << e.engine << " " << e.quantity << " [" << e.unit
-              << "]: finest " << number(e.values.back()) << ", order "
-              << (e.estimate.order ? number(*e.estimate.order) : "- (" + e.estimate.reason + ")")
-              << ", limit " << (e.estimate.limit ? number(*e.estimate.limit) : "-")
+              << "]: finest " << number(e.values.back()) << ", " << e.verdict.text
+              << (quote && e.estimate.limit ? ", limit " + number(*e.estimate.limit) : "")
               << (std::isfinite(vs_reference)
                       ? ", finest vs closed form " + number(100.0 * vs_reference) + " %"
                       : "")

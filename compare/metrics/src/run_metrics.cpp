@@ -146,7 +146,7 @@ const std::vector<MetricInfo>& metricCatalog() {
        "Cusick drape coefficient (A_shadow - A_support) / (A_specimen - A_support) at the end",
        [](E m) { return m.drape_coefficient; }, nullptr, true},
       {"drape_folds", false, "1", "folds (lobes) of a draped disc's outline at the end",
-       [](E m) { return m.drape_folds; }, nullptr, true},
+       [](E m) { return m.drape_folds; }, nullptr, true, true},
       {"sag_free_middle", false, "m", "middle of the free edge below the pins at the end",
        [](E m) { return m.sag_free_middle; }},
       // Undefined without a collider: 0 there would pass any bound for nothing measured.

@@ -1,6 +1,8 @@
 #include "compare/studies/refinement.h"
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace springcheck {
 
@@ -47,6 +49,44 @@ RefinementEstimate estimateRefinement(const std::vector<int>& resolutions,
   e.order = p;
   e.limit = values[n - 1] - d23 * std::pow(h3, p) / (std::pow(h2, p) - std::pow(h3, p));
   return e;
+}
+
+namespace {
+bool ordersAgree(double a, double b) { return std::abs(a - b) <= kOrderAgreement * std::max(a, b); }
+std::string orderText(double p) {
+  std::ostringstream out;
+  out.precision(3);
+  out << p;
+  return out.str();
+}
+}  // namespace
+
+RefinementVerdict refinementVerdict(const std::vector<int>& resolutions,
+                                    const std::vector<double>& values,
+                                    std::optional<double> expected_order) {
+  const RefinementEstimate finest = estimateRefinement(resolutions, values);
+  const std::string not_converged = "not converged at these resolutions: ";
+  if (!finest.order) return {false, not_converged + finest.reason};
+  const std::string observed = "observed order " + orderText(*finest.order);
+  if (values.size() >= 4) {
+    const RefinementEstimate coarser = estimateRefinement(
+        std::vector<int>(resolutions.begin(), resolutions.end() - 1),
+        std::vector<double>(values.begin(), values.end() - 1));
+    if (coarser.order && ordersAgree(*coarser.order, *finest.order)) {
+      return {true, "converged: " + observed + ", the coarser triple's " + orderText(*coarser.order)};
+    }
+    if (!expected_order) {
+      return {false, not_converged + observed + ", the coarser triple's " +
+                         (coarser.order ? orderText(*coarser.order) : "none (" + coarser.reason + ")")};
+    }
+  }
+  if (!expected_order) {
+    return {false, not_converged + observed + " from three resolutions, with no expected order "
+                                   "to hold it to: four or more would show it"};
+  }
+  const std::string against = observed + " (expected " + orderText(*expected_order) + ")";
+  if (ordersAgree(*finest.order, *expected_order)) return {true, "converged: " + against};
+  return {false, not_converged + against};
 }
 
 }  // namespace springcheck

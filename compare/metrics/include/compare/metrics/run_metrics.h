@@ -109,6 +109,9 @@ struct MetricInfo {
   std::function<std::optional<double>(const PairMetrics&)> of_pair = nullptr;
   // A measurement of the settled shape that `springcheck refine` follows across resolutions.
   bool refined = false;
+  // A count (a drape's folds): a whole number, which converges by settling on a value, never
+  // at an order.
+  bool count = false;
 };
 const std::vector<MetricInfo>& metricCatalog();
 const MetricInfo* findMetric(std::string_view name);

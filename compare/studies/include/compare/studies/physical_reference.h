@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "compare/studies/refinement.h"
 #include "mysim/model.h"
 #include "mysim/scene.h"
 
@@ -42,11 +43,5 @@ std::optional<PhysicalReference> closedFormReference(const mysim::Scene& scene,
 // do not converge monotonically; no value when the finest three give no order.
 PhysicalReference refinementReference(std::string_view quantity, const std::vector<int>& resolutions,
                                       const std::vector<double>& values, const std::string& of);
-
-// Two observed orders from successive triples agree when they differ by at most this fraction
-// of the larger: measured on the shipped cantilever (hinge bending, second order), the triples
-// 4-8-16 and 8-16-32 give orders within 0.2 of each other; a pre-asymptotic sequence (the flex
-// model's, whose "limit" is no bending at all) gives orders 0.3 and 1.9.
-constexpr double kOrderAgreement = 0.3;
 
 }  // namespace springcheck

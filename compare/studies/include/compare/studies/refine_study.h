@@ -7,6 +7,7 @@
 #include <expected>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,9 @@ struct RefineRow {
   std::string reference_quantity;
   // Why the run has no values (refused, blew up), or why it has no closed form to be held to.
   std::string note;
+  // The order at which the discretisation's smooth quantities converge, where theory and
+  // measurement give one (refine_study.cpp: expectedOrder).
+  std::optional<double> expected_order;
 };
 
 struct RefineSettings {
@@ -50,6 +54,10 @@ struct RefineEstimateRow {
   std::vector<int> resolutions;  // the completed runs that have the quantity
   std::vector<double> values;
   RefinementEstimate estimate;
+  std::optional<double> expected_order;  // none for a count or a model with no consistent order
+  // Whether the estimate may be quoted (refinementVerdict): without it the tables leave the
+  // order and the limit empty and the report draws neither.
+  RefinementVerdict verdict;
   double reference = NAN;  // the closed form at the finest resolution, where there is one
   double finestVsLimit() const;      // relative; NaN without a limit
   double finestVsReference() const;  // relative; NaN without a closed form

@@ -1,6 +1,8 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <sstream>
 
 #include "commands.h"
 #include "compare/io/scene_files.h"
@@ -50,13 +52,46 @@ int gateSuite(const EngineRegistry& registry, const Tolerances& tolerances,
   return !report->passed() && hidden ? kFailure : code;
 }
 
-// One scene's comparison and its name, or why it could not be made (a scene file that does not
-// load, an unknown engine).
-struct SceneComparison {
-  std::string name;
-  Comparison comparison;
+// One scene's comparison, printed and written as soon as it is made (a run's trajectories are
+// not held for a whole suite), or why it could not be made (a scene file that does not load, an
+// unknown engine).
+struct SceneOutcome {
+  std::string error;    // the scene could not be compared: nothing else is set
+  std::string printed;  // its table, printed in the files' order once all are done
+  std::string write_error;  // its results could not be written (said on stderr)
+  int code = kOk;       // what it adds to the suite's exit code
+  std::optional<Comparison> kept;  // for the gate, with --tolerances
 };
-using SceneOutcome = std::expected<SceneComparison, std::string>;
+
+SceneOutcome compareOneScene(const EngineRegistry& registry, const std::string& file,
+                             const SuiteOptions& o, const Timing& timing, int jobs) {
+  SceneOutcome outcome;
+  auto scene = registry.loadScene(file);
+  if (!scene) {
+    outcome.error = scene.error();
+    return outcome;
+  }
+  auto comparison = compareScene(registry, *scene, registry.names(), timing);
+  if (!comparison) {
+    outcome.error = comparison.error();
+    return outcome;
+  }
+  comparison->jobs = jobs;
+  std::ostringstream printed;
+  printComparison(printed, *comparison);
+  outcome.printed = printed.str();
+  if (!comparison->failed.empty()) outcome.code = kEngineFailed;
+  for (const EngineMetrics& m : comparison->engines) {
+    // The seed scenes run at the seed's own (stable) settings: a blow-up there is a bug.
+    if (m.status != "ok" && outcome.code == kOk) outcome.code = exitCodeForStatus(m.status);
+  }
+  if (auto written = writeComparison(o.out + "/" + scene->name, *comparison); !written) {
+    outcome.write_error = written.error();
+    outcome.code = kFailure;
+  }
+  if (!o.tolerances.empty()) outcome.kept = std::move(*comparison);
+  return outcome;
+}
 
 // Every scene in every engine, --jobs scenes side by side (each mysim run on its share of the
 // cores), in the files' order.
@@ -66,20 +101,9 @@ std::vector<SceneOutcome> compareScenes(const EngineRegistry& registry,
   const int jobs = jobCount(o.jobs, files.size());
   Timing timing = o.timing;
   if (timing.threads == 0 && jobs > 1) timing.threads = std::max(1, mysim::availableCores() / jobs);
-  std::vector<SceneOutcome> outcomes(files.size(), std::unexpected(std::string()));
+  std::vector<SceneOutcome> outcomes(files.size());
   forEachInParallel(files.size(), jobs, [&](std::size_t k) {
-    auto scene = registry.loadScene(files[k]);
-    if (!scene) {
-      outcomes[k] = std::unexpected(scene.error());
-      return;
-    }
-    auto comparison = compareScene(registry, *scene, registry.names(), timing);
-    if (!comparison) {
-      outcomes[k] = std::unexpected(comparison.error());
-      return;
-    }
-    comparison->jobs = jobs;
-    outcomes[k] = SceneComparison{scene->name, std::move(*comparison)};
+    outcomes[k] = compareOneScene(registry, files[k], o, timing, jobs);
   });
   return outcomes;
 }
@@ -114,26 +138,19 @@ int runSuite(const SuiteOptions& o) {
   ComparisonCache done;
   for (std::size_t k = 0; k < files->size(); ++k) {
     SceneOutcome& outcome = outcomes[k];
-    if (!outcome) {
-      std::cerr << "error: " << outcome.error() << '\n';
+    if (!outcome.error.empty()) {
+      std::cerr << "error: " << outcome.error << '\n';
       code = kBadInput;
       continue;
     }
-    Comparison& comparison = outcome->comparison;
-    printComparison(std::cout, comparison);
-    if (!comparison.failed.empty() && code == kOk) code = kEngineFailed;
-    if (auto written = writeComparison(o.out + "/" + outcome->name, comparison); !written) {
-      std::cerr << "error: " << written.error() << '\n';
-      code = kFailure;
-    }
-    for (const EngineMetrics& m : comparison.engines) {
-      // The seed scenes run at the seed's own (stable) settings: a blow-up there is a bug.
-      if (m.status != "ok" && code == kOk) code = exitCodeForStatus(m.status);
-    }
+    std::cout << outcome.printed;
+    if (!outcome.write_error.empty()) std::cerr << "error: " << outcome.write_error << '\n';
     std::cout << '\n';
+    // The first scene's trouble sets the code; an unwritable result overrides it.
+    if (outcome.code == kFailure || (code == kOk && outcome.code != kOk)) code = outcome.code;
     std::error_code ec;
     const std::string key = std::filesystem::weakly_canonical((*files)[k], ec).string();
-    if (tolerances) done.emplace(key, std::move(comparison));  // printed and written: the gate's now
+    if (outcome.kept) done.emplace(key, std::move(*outcome.kept));
   }
   if (tolerances) code = gateSuite(*registry, *tolerances, done, o, code);
   std::cout << "results in " << o.out << "/<scene>/\n";

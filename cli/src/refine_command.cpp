@@ -139,9 +139,9 @@ void addRefineCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--out", options->out, "Output directory")->capture_default_str();
   addTimingOptions(cmd, options->timing, 1);
   cmd->add_option("--jobs", options->jobs,
-                  "Runs side by side (default: every free core); wall times are kept with the "
-                  "jobs they were measured beside, --jobs 1 times each run alone")
-      ->check(CLI::Range(1, 1024));
+                  "Runs side by side (0, the default: every free core); wall times are kept with "
+                  "the jobs they were measured beside, --jobs 1 times each run alone")
+      ->check(CLI::Range(0, 1024));
   cmd->callback([options, &exit_code] { exit_code = refine(*options); });
 }
 

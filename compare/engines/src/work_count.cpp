@@ -24,7 +24,11 @@ bool reportWorkDone(std::string& error) {
   std::ofstream out(path, std::ios::app);
   out << "{\"runs\": " << work.runs << ", \"steps\": " << work.steps << "}\n";
   out.flush();
-  if (!out) error = std::string(kWorkFileVariable) + "=" + path + ": cannot append the work count";
+  if (!out) {
+    error = std::string(kWorkFileVariable) + "=" + path +
+            ": cannot append the work count (expected a file springcheck may write, or the "
+            "variable unset)";
+  }
   return static_cast<bool>(out);
 }
 

@@ -21,7 +21,7 @@ TEST(PlaneCollider, PutsATouchingParticleAtTheMarginAndKeepsItsTangentialVelocit
   EXPECT_DOUBLE_EQ(signedDistance(ground, Vec3(3, 1.5, -2)), 0.5);
   EXPECT_FALSE(contactPoint(ground, Vec3(0, 1.02, 0)));  // beyond the margin
   Vector x = (Vector(3) << 0.3, 0.9, 0.2).finished(), v = (Vector(3) << 1, -2, 3).finished();
-  EXPECT_EQ(resolveContacts({ground}, {0}, x, v), 1);
+  EXPECT_EQ(resolveContacts({ground}, {0}, Vector(x), x, v), 1);
   EXPECT_EQ(Vec3(x), Vec3(0.3, 1.01, 0.2));
   EXPECT_EQ(Vec3(v), Vec3(1, 0, 3));
 }
@@ -56,7 +56,7 @@ TEST(Colliders, ABoxOnTheGroundNeverPushesANodeOutThroughItsBottom) {
                                                 Plane{Vec3::Zero(), Vec3::UnitY(), 1e-3}};
   Vector x = (Vector(3) << -0.04748955, 0.00218487, 0.1918533).finished();
   Vector v = (Vector(3) << -0.05, 0.0, -0.3).finished();
-  resolveContacts(ground_and_box, {0}, x, v);
+  resolveContacts(ground_and_box, {0}, Vector(x), x, v);
   EXPECT_NEAR(x[2], 0.201, 1e-15);  // out through the +z side to the margin
   EXPECT_DOUBLE_EQ(x[1], 0.00218487);
   EXPECT_GE(signedDistance(ground_and_box[0], Vec3(x)), 1e-3 - 1e-15);

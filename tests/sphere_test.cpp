@@ -19,13 +19,13 @@ TEST(SphereCollider, ProjectsToTheSurfaceAndRemovesOnlyInwardNormalVelocity) {
   const Sphere sphere{Vec3(1, 0, 0), 0.5, 0.01};
   Vector x = (Vector(6) << 1.2, 0, 0, 1.0, 2.0, 0).finished();  // first inside, second outside
   Vector v = (Vector(6) << -1, 3, 0, 0, -1, 0).finished();
-  EXPECT_EQ(resolveContacts({sphere}, {0, 0}, x, v), 1);
+  EXPECT_EQ(resolveContacts({sphere}, {0, 0}, Vector(x), x, v), 1);
   EXPECT_TRUE(Vec3(x.head<3>()).isApprox(Vec3(1.51, 0, 0)));
   EXPECT_TRUE(Vec3(v.head<3>()).isApprox(Vec3(0, 3, 0)));  // tangential part kept
   EXPECT_EQ(Vec3(x.tail<3>()), Vec3(1, 2, 0));
   // Outward-moving contacts keep their velocity: the sphere does not pull.
   Vector x2 = (Vector(3) << 1.2, 0, 0).finished(), v2 = (Vector(3) << 2, 0, 0).finished();
-  resolveContacts({sphere}, {0}, x2, v2);
+  resolveContacts({sphere}, {0}, Vector(x2), x2, v2);
   EXPECT_EQ(Vec3(v2), Vec3(2, 0, 0));
 }
 

@@ -62,7 +62,7 @@ class ClassicStepper final : public BulletStepper {
     if (!model.colliders.empty()) {
       body_->m_cfg.collisions = btSoftBody::fCollision::SDF_RS;
       body_->m_cfg.kKHR = 1.0;
-      body_->m_cfg.kDF = 0.0;  // frictionless, as mysim's colliders
+      body_->m_cfg.kDF = anyFriction(model.colliders) ? 1.0 : 0.0;  // x each body's friction
       colliders_ = addColliders(*world_, model.colliders);
     }
     if (model.wind) {

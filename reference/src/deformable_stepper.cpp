@@ -100,6 +100,7 @@ class DeformableStepper final : public BulletStepper {
     if (!model.colliders.empty()) {
       body_->m_cfg.collisions = btSoftBody::fCollision::SDF_RD | btSoftBody::fCollision::SDF_RDN;
       body_->m_cfg.kKHR = 1.0;  // contact hardness against static bodies: 0.1 by default (soft)
+      if (anyFriction(model.colliders)) body_->m_cfg.kDF = 1.0;  // x each body's friction
       colliders_ = addColliders(*world_, model.colliders);
       if (implicit) {
         notes_.push_back(

@@ -28,15 +28,41 @@ std::optional<UniformSprings> uniformSprings(const mysim::Model& model) {
   return u;
 }
 
+namespace {
+
+// Bullet's soft-body contact has one friction coefficient, kDF x the body's friction, for both
+// sticking and sliding (btSoftBodyInternals.h: CollideSDF_RS, CollideSDF_RD); the classic
+// solver's kinetic branch keeps 1 - fc of the tangential velocity, so fc above 1 reverses it.
+std::optional<std::string> unsupportedFriction(const mysim::Model& model, BulletEngine engine,
+                                               std::string& field) {
+  for (std::size_t k = 0; k < model.colliders.size(); ++k) {
+    const mysim::Friction& f = mysim::colliderFriction(model.colliders[k]);
+    field = "colliders[" + std::to_string(k) + "].friction";
+    if (f.static_coefficient != f.kinetic) {
+      return "Bullet's soft-body contact has one friction coefficient (kDF x the body's friction) "
+             "for sticking and sliding; give static = kinetic, or run mysim, which takes both";
+    }
+    if (engine == BulletEngine::Classic && f.kinetic > 1.0) {
+      return "the classic solver keeps 1 - mu of the tangential velocity on sliding contact, "
+             "which reverses it for mu > 1; use bullet-deformable or bullet-implicit";
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::expected<void, std::string> checkSupported(const mysim::Model& model, BulletEngine engine,
                                                 const BulletSettings& settings) {
-  // The deformable engines take every model: what Bullet's own force classes cannot hold goes
-  // through our per-link spring force and custom drag and wind forces (deformable_forces.h).
-  if (engine != BulletEngine::Classic) return {};
   const std::string prefix = settings.source + ": " + bulletEngineName(engine) + ": ";
   auto refuse = [&](const std::string& field, const std::string& why) {
     return std::unexpected(prefix + field + ": " + why);
   };
+  std::string friction_field;
+  if (auto why = unsupportedFriction(model, engine, friction_field)) return refuse(friction_field, *why);
+  // The deformable engines take every other model: what Bullet's own force classes cannot hold
+  // goes through our per-link spring force and custom drag and wind forces (deformable_forces.h).
+  if (engine != BulletEngine::Classic) return {};
   if (!model.hinges.empty()) {
     return refuse("system.material.bending",
                   "the classic solver has no hinge energy (its bending constraints are links "

@@ -53,7 +53,10 @@ StaticCollider::StaticCollider(btDiscreteDynamicsWorld& world, const mysim::Coll
   motion_ = btDefaultMotionState(twin.placement);
   body_ = std::make_unique<btRigidBody>(
       btRigidBody::btRigidBodyConstructionInfo(0.0, &motion_, shape_.get()));
-  body_->setFriction(0.0);
+  // Bullet's soft-body contacts use kDF x this friction (both Bullet solvers, docs/reference.md);
+  // the steppers set kDF = 1 when a collider has friction, so this is the coefficient itself.
+  // Bullet has one coefficient: checkSupported refuses a static one above the kinetic.
+  body_->setFriction(mysim::colliderFriction(collider).kinetic);
   world_.addRigidBody(body_.get());
 }
 
@@ -64,6 +67,11 @@ std::vector<std::unique_ptr<StaticCollider>> addColliders(
   std::vector<std::unique_ptr<StaticCollider>> bodies;
   for (const mysim::Collider& c : colliders) bodies.push_back(std::make_unique<StaticCollider>(world, c));
   return bodies;
+}
+
+bool anyFriction(const std::vector<mysim::Collider>& colliders) {
+  return std::ranges::any_of(colliders,
+                             [](const mysim::Collider& c) { return mysim::colliderFriction(c).any(); });
 }
 
 double sdfVoxelSize(const std::vector<mysim::Collider>& colliders) {

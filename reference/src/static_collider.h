@@ -11,7 +11,7 @@
 
 namespace reference {
 
-// A mysim collider as a static (mass 0), frictionless Bullet rigid body, added to a world on
+// A mysim collider as a static (mass 0) Bullet rigid body with its friction, added to a world on
 // construction and removed on destruction (so it must die before the world does). Soft bodies
 // meet it through Bullet's sparse signed-distance field, which only samples convex shapes
 // (btSparseSdf::DistanceToShape): every shape is built from convex ones, the plane as a box far
@@ -39,6 +39,9 @@ std::vector<std::unique_ptr<StaticCollider>> addColliders(
 // edges round off over a fifth of it), 0.25 m (Bullet's default) where nothing is curved (the
 // field of a flat face is linear, which trilinear interpolation reproduces at any voxel size).
 double sdfVoxelSize(const std::vector<mysim::Collider>& colliders);
+// Whether any collider has friction: then the soft body's kDF is 1, so kDF x the body's friction
+// is the collider's coefficient (frictionless scenes keep the settings they always had).
+bool anyFriction(const std::vector<mysim::Collider>& colliders);
 // The soft body's collision margin (m): the largest collider margin, at least 0.1 mm (Bullet's
 // contact needs a positive margin); 1 mm without colliders.
 double softBodyMargin(const std::vector<mysim::Collider>& colliders);

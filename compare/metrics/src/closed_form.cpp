@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "compare/metrics/cantilever_metric.h"
+#include "compare/metrics/sliding_contact.h"
 
 namespace springcheck {
 
@@ -348,6 +349,7 @@ ClosedFormResult closedFormError(const mysim::Model& model, const mysim::RunReco
     return std::unexpected(why.str());
   }
   if (model.isCircle()) return circleError(model, run);
+  if (auto sliding = slidingError(model, run)) return *sliding;
   if (auto cantilever = cantileverReference(model)) {
     const auto reading = readCantilever(model, run.frames.back());
     const double exact = cantilever->overhang * cantilever->elastica.drop;

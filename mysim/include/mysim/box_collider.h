@@ -8,7 +8,7 @@ namespace mysim {
 
 class FieldReader;
 
-// A static frictionless box, axis-aligned ({"type": "box", "center": [...], "half_extents":
+// A static box, axis-aligned ({"type": "box", "center": [...], "half_extents":
 // [...]} in "colliders"). A particle inside goes out through the nearest face; one outside but
 // closer than margin goes to distance margin along the line from its nearest box point (so the
 // grown surface has rounded edges and corners, as Bullet's margins do).
@@ -17,6 +17,7 @@ struct Box {
   Vec3 center = Vec3::Zero();             // m
   Vec3 half_extents = Vec3::Constant(1);  // m, each > 0
   double margin = 0.0;                    // m
+  Friction friction;  // none unless the scene gives "friction" (collider.h reads it)
 
   static Box read(FieldReader& r);  // center, half_extents, margin (default 1e-3 smallest half)
   nlohmann::json describe() const;

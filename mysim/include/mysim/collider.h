@@ -23,6 +23,9 @@ inline const char* colliderType(const Collider& c) {
 inline double colliderMargin(const Collider& c) {
   return std::visit([](const auto& shape) { return shape.margin; }, c);
 }
+inline const Friction& colliderFriction(const Collider& c) {
+  return std::visit([](const auto& shape) -> const Friction& { return shape.friction; }, c);
+}
 inline double signedDistance(const Collider& c, const Vec3& x) {
   return std::visit([&](const auto& shape) { return signedDistance(shape, x); }, c);
 }
@@ -38,14 +41,22 @@ inline std::optional<SurfacePoint> contactPoint(const Collider& c, const Vec3& x
 
 // "sphere, plane, box": the types a scene may name.
 std::string colliderTypes();
-// One collider from a scene object whose "type" names its shape (unknown keys refused).
+// One collider from a scene object whose "type" names its shape, with its "friction" (unknown
+// keys refused).
 Collider readCollider(FieldReader& r);
+// "friction": {"static": MU_S, "kinetic": MU_K} of the object `r` reads, if it has one: each in
+// [0, 100] (100 sticks on any slope up to 89.4 degrees), kinetic defaulting to static and never
+// above it.
+Friction readFriction(FieldReader& r);
+// The shape's fields, and "friction" when it has any (frictionless colliders are described as
+// before friction existed, so their model files and hashes did not change).
 nlohmann::json describeCollider(const Collider& c);
 
 // After a step: every free particle touching a collider goes onto its surface (applyContact),
 // colliders in the model's order, each avoiding exits into the others (a box's bottom face on
-// the ground). Returns how many contacts were applied.
+// the ground), with the collider's friction against the particle's position when the step
+// began (`start`, 3N). Returns how many contacts were applied.
 int resolveContacts(const std::vector<Collider>& colliders, const std::vector<char>& pinned,
-                    Eigen::Ref<Vector> x, Eigen::Ref<Vector> v);
+                    Eigen::Ref<const Vector> start, Eigen::Ref<Vector> x, Eigen::Ref<Vector> v);
 
 }  // namespace mysim

@@ -76,6 +76,10 @@ class ParticleSystem final : public OdeSystem {
 
   Model model_;
   BlowUpLimits limits_;
+  // Positions (and time) after the last contact pass: where the next step began, which
+  // friction measures the step's slide from. Mutable: initialState(), const, starts them.
+  mutable Vector step_start_;
+  mutable double step_start_t_ = 0.0;
   double energy_scale_ = 0.0;    // J, see the constructor
   SpringAdjacency adjacency_;    // derived from model_.springs once
   bool damped_springs_ = false;  // any spring damping: the per-spring pass reads velocities

@@ -9,7 +9,7 @@ namespace mysim {
 
 class FieldReader;
 
-// A static frictionless infinite plane, solid on the side opposite its normal: the ground of a
+// A static infinite plane, solid on the side opposite its normal: the ground of a
 // cloth-drop test ({"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0]} in "colliders").
 // Particles closer than margin to it, or behind it, are put at distance margin in front.
 struct Plane {
@@ -17,6 +17,7 @@ struct Plane {
   Vec3 point = Vec3::Zero();     // m, any point of the plane
   Vec3 normal = Vec3::UnitY();   // unit, out of the solid side
   double margin = 1e-3;          // m
+  Friction friction;  // none unless the scene gives "friction" (collider.h reads it)
 
   static Plane read(FieldReader& r);  // point, normal (normalised), margin (default 1 mm)
   nlohmann::json describe() const;

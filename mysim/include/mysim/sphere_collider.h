@@ -9,13 +9,14 @@ namespace mysim {
 
 class FieldReader;
 
-// A static frictionless sphere (scene: "sphere": {...} or {"type": "sphere", ...} in
+// A static sphere (scene: "sphere": {...} or {"type": "sphere", ...} in
 // "colliders"). Particles closer to its centre than radius + margin are put on that surface.
 struct Sphere {
   static constexpr const char* kType = "sphere";
   Vec3 center = Vec3::Zero();
   double radius = 1.0;  // m
   double margin = 0.0;  // m, the surface particles are put back on is radius + margin
+  Friction friction;  // none unless the scene gives "friction" (collider.h reads it)
 
   static Sphere read(FieldReader& r);  // center, radius, margin (default 1e-3 radius)
   nlohmann::json describe() const;     // the same fields, for model files

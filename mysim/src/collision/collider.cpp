@@ -34,16 +34,34 @@ Collider readCollider(FieldReader& r) {
     if (!collider && type == shape.kType) collider = decltype(shape)::read(r);
   });
   if (!collider) failField(r.field("type"), "one of " + colliderTypes(), r.raw("type"));
+  const Friction friction = readFriction(r);
+  std::visit([&](auto& shape) { shape.friction = friction; }, *collider);
   r.refuseUnknown("docs/scenes.md");
   return *collider;
 }
 
+Friction readFriction(FieldReader& r) {
+  if (!r.has("friction")) return {};
+  FieldReader f = r.object("friction");
+  Friction friction;
+  friction.static_coefficient = f.inRange("static", 0.0, 100.0);
+  friction.kinetic = f.has("kinetic") ? f.inRange("kinetic", 0.0, 100.0) : friction.static_coefficient;
+  if (friction.kinetic > friction.static_coefficient) {
+    failField(f.field("kinetic"), "at most friction.static (Coulomb: mu_k <= mu_s)", f.raw("kinetic"));
+  }
+  f.refuseUnknown("docs/scenes.md");
+  return friction;
+}
+
 nlohmann::json describeCollider(const Collider& c) {
-  return std::visit([](const auto& shape) { return shape.describe(); }, c);
+  nlohmann::json j = std::visit([](const auto& shape) { return shape.describe(); }, c);
+  const Friction& friction = colliderFriction(c);
+  if (friction.any()) j["friction"] = {{"static", friction.static_coefficient}, {"kinetic", friction.kinetic}};
+  return j;
 }
 
 int resolveContacts(const std::vector<Collider>& colliders, const std::vector<char>& pinned,
-                    Eigen::Ref<Vector> x, Eigen::Ref<Vector> v) {
+                    Eigen::Ref<const Vector> start, Eigen::Ref<Vector> x, Eigen::Ref<Vector> v) {
   // Each collider's test for exits into the others, built once per call, not once per particle.
   std::vector<Blocked> inside_another;
   for (std::size_t k = 0; k < colliders.size(); ++k) {
@@ -59,7 +77,8 @@ int resolveContacts(const std::vector<Collider>& colliders, const std::vector<ch
     if (pinned[p]) continue;
     for (std::size_t k = 0; k < colliders.size(); ++k) {
       if (const auto s = contactPoint(colliders[k], x.segment<3>(3 * p), inside_another[k])) {
-        applyContact(*s, x.segment<3>(3 * p), v.segment<3>(3 * p));
+        applyContact(*s, colliderFriction(colliders[k]), start.segment<3>(3 * p),
+                     x.segment<3>(3 * p), v.segment<3>(3 * p));
         ++contacts;
       }
     }

@@ -244,7 +244,9 @@ Scene readScene(const json& root, const std::string& source,
   }
   if (top.has("sphere")) {  // the seed's one sphere, kept as its own field
     FieldReader r = top.object("sphere");
-    scene.colliders.push_back(Sphere::read(r));
+    Sphere sphere = Sphere::read(r);
+    sphere.friction = readFriction(r);
+    scene.colliders.push_back(sphere);
     r.refuseUnknown("docs/scenes.md");
   }
   if (top.has("colliders")) {

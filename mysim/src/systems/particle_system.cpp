@@ -219,9 +219,13 @@ void ParticleSystem::afterStepConst(State& state) const {
     state.y.segment<3>(3 * p) = pinPosition(p, state.t);
     state.y.segment<3>(n3 + 3 * p) = pin_velocity;
   }
-  if (!model_.colliders.empty()) {
-    resolveContacts(model_.colliders, model_.pinned, state.y.head(n3), state.y.tail(n3));
-  }
+  if (model_.colliders.empty()) return;
+  // Friction needs where each particle was when this step began: the state the previous call
+  // left, when this state follows it in time (else, as at the start, the state itself).
+  if (step_start_.size() != n3 || !(state.t > step_start_t_)) step_start_ = state.y.head(n3);
+  resolveContacts(model_.colliders, model_.pinned, step_start_, state.y.head(n3), state.y.tail(n3));
+  step_start_ = state.y.head(n3);
+  step_start_t_ = state.t;
 }
 
 void ParticleSystem::afterStep(State& state) { afterStepConst(state); }

@@ -18,7 +18,9 @@ namespace springcheck {
 //    last frame, x_j the discrete elastic catenary (closed_form.cpp: the tension's horizontal part
 //    and the first segment's vertical part solved by Newton to 1e-13 of the span);
 //  - a material strip in a clamp with hinge bending (cantilever_metric.h): |tip drop - the heavy
-//    elastica's| at the last frame, m.
+//    elastica's| at the last frame, m;
+//  - a body resting on one plane, sliding or held by Coulomb friction (sliding_contact.h): the
+//    largest |centroid displacement - the rigid block's| over the frames, m.
 struct ClosedFormError {
   std::string quantity;  // what was compared
   double error = 0.0;    // m for positions, relative for the period

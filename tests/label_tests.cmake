@@ -47,9 +47,17 @@ function(discover_labelled_tests target)
   list(REMOVE_DUPLICATES _label_sets)
   foreach(_label IN LISTS _label_sets)
     string(REPLACE "," "_" _key "${_label}")
-    string(REPLACE "," ";" _labels "${_label}")
     string(REPLACE ";" ":" _filter "${_filter_${_key}}")
-    gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60 TEST_FILTER "${_filter}"
-                         PROPERTIES LABELS "${_labels}")
+    # The labels are set by a script of ours that ctest reads after the discovered tests, not by
+    # gtest_discover_tests(PROPERTIES LABELS ...): that flattens a list into name/value pairs, so
+    # every test kept only its first label ("physics,bullet,slow" was "physics", and the
+    # sanitizer pass's --label-exclude slow excluded nothing).
+    set(_list ${target}_${_key}_TESTS)
+    gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60 TEST_FILTER "${_filter}" TEST_LIST ${_list})
+    string(REPLACE "," ";" _labels "${_label}")
+    set(_script ${CMAKE_CURRENT_BINARY_DIR}/${target}_${_key}_labels.cmake)
+    file(WRITE ${_script}
+         "if(${_list})\n  set_tests_properties(\${${_list}} PROPERTIES LABELS \"${_labels}\")\nendif()\n")
+    set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES ${_script})
   endforeach()
 endfunction()

@@ -15,7 +15,8 @@ symplectic Euler -- v += h a(t, x, v); x += h v -- for any other. Both follow th
 rules ("Matching mysim's integrators to the last bit") operation by operation: forces of gravity,
 drag, wind, damped springs and hinges summed in mysim's order; pinned particles put on their
 prescribed path after the step; particles touching a collider (sphere, plane, box) moved onto
-its surface grown by its margin and stripped of their inward velocity. So it agrees with
+its surface grown by its margin and stripped of their inward velocity, with the collider's
+Coulomb friction on that projection. So it agrees with
 `mysim:symplectic-euler` and `mysim:xpbd` to the bit (tests/protocol_rules_test.cpp). Copy it
 as the start of your own engine.
 """
@@ -168,6 +169,9 @@ class Model:
             self.wind_direction = np.array(self.wind["direction"], dtype=float)
         self.pins = model["pin_motion"]
         self.colliders = model["colliders"]
+        # Where each particle was when the step began: friction undoes or shortens the slide
+        # since then (the protocol page's "Friction").
+        self.step_start = self.start_x.copy()
 
     def hinge_vectors(self, x):
         """b = w_0 x_0, then b + w_a x_a for a = 1, 2, 3: (H, 3)."""
@@ -217,11 +221,38 @@ class Model:
             touching, point, normal = contact(collider, x, others)
             touching &= self.free
             if np.any(touching):
-                x[touching] = point[touching]
-                vn = dot3(v[touching], normal[touching])
+                rows = np.nonzero(touching)[0]
+                n = normal[rows]
+                pushed = np.maximum(0.0, dot3(point[rows] - x[rows], n))
+                x[rows] = point[rows]
+                vn = dot3(v[rows], n)
                 inward = vn < 0.0
-                rows = np.nonzero(touching)[0][inward]
-                v[rows] = v[rows] - vn[inward][:, None] * normal[rows]
+                v[rows[inward]] = v[rows[inward]] - vn[inward][:, None] * n[inward]
+                if "friction" in collider:
+                    apply_friction(collider["friction"], rows, n, pushed, np.maximum(0.0, -vn),
+                                   self.step_start, x, v)
+        self.step_start = x.copy()
+
+
+def tangential(u, n):
+    return u - dot3(u, n)[:, None] * n
+
+
+def apply_friction(friction, rows, n, pushed, stopped, start, x, v):
+    """Coulomb's law on the contact projection (the protocol page's "Friction"): the slide since
+    the step began is undone when static friction can stop it and the tangential velocity (mu_s
+    times what the normal projection pushed and stopped), else both shortened by mu_k times it."""
+    mu_s, mu_k = friction["static"], friction["kinetic"]
+    slid = tangential(x[rows] - start[rows], n)
+    vt = tangential(v[rows], n)
+    slid_length = np.sqrt(dot3(slid, slid))
+    speed = np.sqrt(dot3(vt, vt))
+    stick = (slid_length <= mu_s * pushed) & (speed <= mu_s * stopped)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        keep_x = np.where(stick, 1.0, np.minimum(1.0, np.where(slid_length > 0, mu_k * pushed / slid_length, 0.0)))
+        keep_v = np.where(stick, 1.0, np.minimum(1.0, np.where(speed > 0, mu_k * stopped / speed, 0.0)))
+    x[rows] = x[rows] - slid * keep_x[:, None]
+    v[rows] = v[rows] - vt * keep_v[:, None]
 
 
 def symplectic_euler_step(model, t, x, v, h):

@@ -90,6 +90,7 @@ ExternalEngineSpec readEntry(mysim::FieldReader& r) {
   }
   spec.time_dependent_forces = r.boolean("time_dependent_forces", spec.time_dependent_forces);
   spec.hinges = r.boolean("hinges", spec.hinges);
+  spec.friction = r.boolean("friction", spec.friction);
   r.refuseUnknown(kSchema);
   return spec;
 }

@@ -220,7 +220,7 @@ std::expected<Execution, EngineError> execute(const ExternalEngineSpec& spec,
 }
 
 // What the engine declared of itself against what the scene needs: hinge bending needs an engine
-// that reads hinges; forces that ignore time cannot take wind or driven pins. Such a scene is
+// that reads hinges, friction one that applies it; forces that ignore time cannot take wind or driven pins. Such a scene is
 // refused, naming both sides.
 std::optional<EngineError> refusal(const ExternalEngineSpec& spec, const mysim::Model& model,
                                    const RunConfig& config) {
@@ -229,6 +229,15 @@ std::optional<EngineError> refusal(const ExternalEngineSpec& spec, const mysim::
                        "engine '" + spec.name + "' does not declare hinges (\"hinges\": true in " +
                            spec.source + "); " + config.source +
                            " bends by hinges (system.material.bending), which it would ignore"};
+  }
+  if (!spec.friction) {
+    for (std::size_t k = 0; k < model.colliders.size(); ++k) {
+      if (!mysim::colliderFriction(model.colliders[k]).any()) continue;
+      return EngineError{EngineError::Kind::Refused,
+                         "engine '" + spec.name + "' does not declare friction (\"friction\": true in " +
+                             spec.source + "); " + config.source + " gives colliders[" +
+                             std::to_string(k) + "] friction, which it would ignore"};
+    }
   }
   if (spec.time_dependent_forces) return std::nullopt;
   const char* driver = model.wind         ? "wind (forces.wind)"

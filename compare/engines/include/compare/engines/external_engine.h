@@ -26,6 +26,9 @@ struct ExternalEngineSpec {
   // default: a scene with hinge bending is refused for it, since an engine that never read the
   // field would run the cloth without bending and look merely soft.
   bool hinges = false;
+  // Whether it applies colliders' friction (the model file's colliders[k].friction): a scene
+  // with friction is refused for one that does not declare it (it would slide frictionless).
+  bool friction = false;
   std::string source;         // the engines file, for messages
   std::string dir;            // its folder: {dir}, and relative programs resolve against it
 };

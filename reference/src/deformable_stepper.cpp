@@ -12,6 +12,7 @@
 #include <BulletSoftBody/btSoftBodyRigidBodyCollisionConfiguration.h>
 
 #include "deformable_forces.h"
+#include "mysim/cloth_mesh.h"
 #include "engine_support.h"
 #include "soft_body.h"
 #include "static_collider.h"
@@ -19,6 +20,21 @@
 
 namespace reference {
 namespace {
+
+// Bullet's own self-collision (btSoftBody::defaultCollisionHandler with itself): the cloth's
+// triangles as faces, VF_DD with setSelfCollision(true), so the deformable world adds face-face
+// contacts (CollideFF_DD, within twice the body's margin) and its CCD pass
+// (performGeometricCollisions). One margin serves the colliders and the self-contacts: half the
+// thickness, or the colliders' if larger (checkSupported refuses a chain, which has no faces).
+void enableSelfCollision(btSoftBody& body, const mysim::Model& model, std::vector<std::string>& notes) {
+  for (const Eigen::Vector3i& t : mysim::clothTriangles(model)) body.appendFace(t[0], t[1], t[2]);
+  body.m_cfg.collisions |= btSoftBody::fCollision::VF_DD;
+  body.setSelfCollision(true);
+  const double margin = std::max(softBodyMargin(model.colliders), 0.5 * *model.self_collision_thickness);
+  body.getCollisionShape()->setMargin(margin);
+  notes.push_back("self-collision by Bullet's own face-face contacts (VF_DD) at twice the soft "
+                  "body's margin, " + std::to_string(margin) + " m");
+}
 
 // Counts what Bullet's Krylov solver does, which Bullet does not report: it wraps the
 // preconditioner, which the solver applies once per iteration plus a fixed number of times per
@@ -108,6 +124,7 @@ class DeformableStepper final : public BulletStepper {
             "tried (docs/reference.md); a blow-up here is Bullet's, reported as is");
       }
     }
+    if (model.self_collision_thickness) enableSelfCollision(*body_, model, notes_);
     world_->addSoftBody(body_.get());
 
     // Bullet's mass-spring force where it holds the model (one stiffness for non-bending links,

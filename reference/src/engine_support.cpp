@@ -1,5 +1,7 @@
 #include "engine_support.h"
 
+#include "mysim/cloth_mesh.h"
+
 namespace reference {
 
 double uniformFreeMass(const mysim::Model& model) {
@@ -60,6 +62,18 @@ std::expected<void, std::string> checkSupported(const mysim::Model& model, Bulle
   };
   std::string friction_field;
   if (auto why = unsupportedFriction(model, engine, friction_field)) return refuse(friction_field, *why);
+  if (model.self_collision_thickness) {
+    if (engine == BulletEngine::Classic) {
+      return refuse("system.self_collision",
+                    "the classic solver's self-collision needs clusters (CL_SELF), a different "
+                    "body than the one matched to mysim's springs; use bullet-deformable or "
+                    "bullet-implicit");
+    }
+    if (mysim::clothTriangles(model).empty()) {
+      return refuse("system.self_collision",
+                    "Bullet's soft-body self-collision is between faces; a chain has none");
+    }
+  }
   // The deformable engines take every other model: what Bullet's own force classes cannot hold
   // goes through our per-link spring force and custom drag and wind forces (deformable_forces.h).
   if (engine != BulletEngine::Classic) return {};

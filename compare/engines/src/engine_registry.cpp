@@ -1,4 +1,6 @@
 #include "compare/engines/engine_registry.h"
+
+#include "mysim/self_collision.h"
 #include "compare/engines/work_count.h"
 
 #include <algorithm>
@@ -182,6 +184,7 @@ std::optional<EngineError> limitError(const mysim::Model& model, const RunConfig
   auto error = mysim::checkRunLimits(particles, model.springs.size(), config.run);
   if (!error) error = mysim::checkModelScales(model, config.run.dt);
   if (!error) error = mysim::checkStartOutsideColliders(model);
+  if (!error) error = mysim::checkSelfCollision(model);
   if (!error) return std::nullopt;
   return EngineError{EngineError::Kind::Invalid,
                      config.source + ": " + error->field + ": " + error->message};

@@ -91,6 +91,7 @@ ExternalEngineSpec readEntry(mysim::FieldReader& r) {
   spec.time_dependent_forces = r.boolean("time_dependent_forces", spec.time_dependent_forces);
   spec.hinges = r.boolean("hinges", spec.hinges);
   spec.friction = r.boolean("friction", spec.friction);
+  spec.self_collision = r.boolean("self_collision", spec.self_collision);
   r.refuseUnknown(kSchema);
   return spec;
 }

@@ -220,7 +220,7 @@ std::expected<Execution, EngineError> execute(const ExternalEngineSpec& spec,
 }
 
 // What the engine declared of itself against what the scene needs: hinge bending needs an engine
-// that reads hinges, friction one that applies it; forces that ignore time cannot take wind or driven pins. Such a scene is
+// that reads hinges, friction and self-collision one that applies them; forces that ignore time cannot take wind or driven pins. Such a scene is
 // refused, naming both sides.
 std::optional<EngineError> refusal(const ExternalEngineSpec& spec, const mysim::Model& model,
                                    const RunConfig& config) {
@@ -238,6 +238,12 @@ std::optional<EngineError> refusal(const ExternalEngineSpec& spec, const mysim::
                              spec.source + "); " + config.source + " gives colliders[" +
                              std::to_string(k) + "] friction, which it would ignore"};
     }
+  }
+  if (model.self_collision_thickness && !spec.self_collision) {
+    return EngineError{EngineError::Kind::Refused,
+                       "engine '" + spec.name + "' does not declare self-collision (\"self_collision\": "
+                       "true in " + spec.source + "); " + config.source +
+                           " asks for it (system.self_collision), which it would ignore"};
   }
   if (spec.time_dependent_forces) return std::nullopt;
   const char* driver = model.wind         ? "wind (forces.wind)"

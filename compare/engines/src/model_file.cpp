@@ -139,6 +139,8 @@ std::expected<void, std::string> writeModelFile(const std::string& dir, const my
                        {"frequency", model.pin_motion->frequency}};
   }
   for (const mysim::Collider& c : model.colliders) j["colliders"].push_back(describeCollider(c));
+  // Only when asked for, so every other model file reads as before self-collision existed.
+  if (model.self_collision_thickness) j["self_collision"] = {{"thickness", *model.self_collision_thickness}};
   // Engines written for a model with at most one sphere read "sphere": kept for them, filled
   // only when the sphere is the one collider (so such an engine never silently drops another).
   if (model.colliders.size() == 1 && std::holds_alternative<mysim::Sphere>(model.colliders[0])) {

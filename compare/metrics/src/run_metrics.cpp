@@ -61,6 +61,7 @@ EngineMetrics engineMetrics(const mysim::Model& model, const EngineRun& run) {
   m.settling_time = settlingTime(r);
   m.max_strain = maxStrainOverRun(model, r);
   m.momentum = momentumDrift(model, r);
+  m.self_contact = selfContactOverRun(model, r);
   return m;
 }
 
@@ -154,6 +155,18 @@ const std::vector<MetricInfo>& metricCatalog() {
        [](E m) { return m.penetration_deepest.empty() ? V() : V(m.penetration_max); }},
       {"penetration_mean_max", false, "m", "largest per-frame mean depth of penetrating nodes",
        [](E m) { return m.penetration_deepest.empty() ? V() : V(m.penetration_mean_max); }},
+      {"self_intersections", false, "1",
+       "most pairs of a cloth's triangles (sharing no vertex) that cross, in any frame",
+       [](E m) { return m.self_contact && m.self_contact->intersections ? V(*m.self_contact->intersections) : V(); },
+       nullptr, false, true},
+      {"self_intersections_time", false, "s", "the first frame with that many",
+       [](E m) { return m.self_contact && m.self_contact->intersections ? V(m.self_contact->intersections_time) : V(); }},
+      {"self_distance_min", false, "m",
+       "smallest distance of a node to a triangle not around it (a chain: of two links sharing no "
+       "node), any frame",
+       [](E m) { return m.self_contact ? m.self_contact->distance_min : V(); }},
+      {"self_distance_min_time", false, "s", "when it was smallest",
+       [](E m) { return m.self_contact && m.self_contact->distance_min ? V(m.self_contact->distance_time) : V(); }},
       {"energy_drift_max", false, "rel", "max |E(t) - E(0)| / E_ref",
        [](E m) { return m.drift.total.empty() ? V() : V(m.drift.max_abs_total); }},
       {"energy_rise", false, "J", "largest rise of total energy above an earlier low",

@@ -43,10 +43,12 @@ struct Model {
   double drag = 0.0;            // N s/m, viscous drag -drag * v on every particle
   std::optional<Wind> wind;
   std::optional<PinMotion> pin_motion;
-  std::vector<Collider> colliders;  // static, frictionless; contacts resolved in this order
+  std::vector<Collider> colliders;  // static, each with its friction; contacts in this order
   std::optional<GridShape> grid;
   std::vector<Eigen::Vector3i> mesh_triangles;  // a mesh cloth's triangles (a grid's: gridTriangles)
   std::optional<MaterialSource> material;  // set when the scene described a material
+  // Self-collision's thickness, m (self_collision.h); absent: the mesh may pass through itself.
+  std::optional<double> self_collision_thickness;
 
   int particleCount() const { return static_cast<int>(mass.size()); }
   bool isCircle() const { return kind == SystemKind::Circle; }

@@ -5,6 +5,7 @@
 #include "mysim/hinge.h"
 #include "mysim/model.h"
 #include "mysim/ode_system.h"
+#include "mysim/self_collision.h"
 #include "mysim/spring_adjacency.h"
 #include "mysim/spring_forces.h"
 
@@ -80,6 +81,7 @@ class ParticleSystem final : public OdeSystem {
   // friction measures the step's slide from. Mutable: initialState(), const, starts them.
   mutable Vector step_start_;
   mutable double step_start_t_ = 0.0;
+  mutable std::optional<SelfCollision> self_collision_;  // when the model asks for it
   double energy_scale_ = 0.0;    // J, see the constructor
   SpringAdjacency adjacency_;    // derived from model_.springs once
   bool damped_springs_ = false;  // any spring damping: the per-spring pass reads velocities

@@ -70,6 +70,7 @@ struct Scene {
   std::optional<Wind> wind;
   std::optional<PinMotion> pin_motion;
   std::vector<Collider> colliders;  // "sphere" (first, if given), then "colliders"
+  std::optional<double> self_collision_thickness;  // system.self_collision.thickness, m
 
   IntegratorSettings integrator;
   double dt = 0.04;              // s

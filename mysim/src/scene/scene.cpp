@@ -59,6 +59,7 @@ Model buildModel(const Scene& scene) {
   model.wind = scene.wind;
   model.pin_motion = scene.pin_motion;
   model.colliders = scene.colliders;
+  model.self_collision_thickness = scene.self_collision_thickness;
   return model;
 }
 

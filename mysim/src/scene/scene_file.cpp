@@ -123,6 +123,11 @@ void readSystem(FieldReader& top, Scene& scene) {
     failField("system.type", "\"circle\", \"chain\", \"cloth\" or \"particles\"",
               system.raw("type"));
   }
+  if (system.has("self_collision")) {
+    FieldReader self = system.object("self_collision");
+    scene.self_collision_thickness = self.positive("thickness");
+    self.refuseUnknown("docs/scenes.md");
+  }
   system.refuseUnknown("docs/scenes.md");
 }
 

@@ -17,6 +17,7 @@ ParticleSystem::ParticleSystem(Model model, BlowUpLimits limits)
       spring_scale_(static_cast<Eigen::Index>(model_.springs.size())),
       hinge_adjacency_(HingeAdjacency::build(model_.particleCount(), model_.hinges)),
       hinge_force_(3 * static_cast<Eigen::Index>(model_.hinges.size())) {
+  if (model_.self_collision_thickness) self_collision_.emplace(model_);
   for (const Spring& s : model_.springs) damped_springs_ |= s.damping != 0.0;
   // The energy scale a healthy run stays within: what it starts with, plus all that gravity can
   // release over the scene's extent, plus work wind and driven pins can do at that scale.
@@ -219,11 +220,15 @@ void ParticleSystem::afterStepConst(State& state) const {
     state.y.segment<3>(3 * p) = pinPosition(p, state.t);
     state.y.segment<3>(n3 + 3 * p) = pin_velocity;
   }
-  if (model_.colliders.empty()) return;
-  // Friction needs where each particle was when this step began: the state the previous call
-  // left, when this state follows it in time (else, as at the start, the state itself).
+  if (model_.colliders.empty() && !self_collision_) return;
+  // Friction and self-collision need where each particle was when this step began: the state
+  // the previous call left, when this state follows it in time (else, as at the start, the
+  // state itself). Self-contacts first, the colliders last: nothing ends inside a collider.
   if (step_start_.size() != n3 || !(state.t > step_start_t_)) step_start_ = state.y.head(n3);
-  resolveContacts(model_.colliders, model_.pinned, step_start_, state.y.head(n3), state.y.tail(n3));
+  if (self_collision_) self_collision_->resolve(step_start_, state.y.head(n3), state.y.tail(n3));
+  if (!model_.colliders.empty()) {
+    resolveContacts(model_.colliders, model_.pinned, step_start_, state.y.head(n3), state.y.tail(n3));
+  }
   step_start_ = state.y.head(n3);
   step_start_t_ = state.t;
 }

@@ -29,6 +29,9 @@ struct ExternalEngineSpec {
   // Whether it applies colliders' friction (the model file's colliders[k].friction): a scene
   // with friction is refused for one that does not declare it (it would slide frictionless).
   bool friction = false;
+  // Whether it keeps the mesh from passing through itself (the model file's self_collision):
+  // a scene asking for it is refused for one that does not declare it.
+  bool self_collision = false;
   std::string source;         // the engines file, for messages
   std::string dir;            // its folder: {dir}, and relative programs resolve against it
 };

@@ -12,6 +12,7 @@
 #include "compare/metrics/energy_metric.h"
 #include "compare/metrics/momentum_metric.h"
 #include "compare/metrics/sag_metric.h"
+#include "compare/metrics/self_contact_metric.h"
 #include "compare/metrics/surface_distance.h"
 #include "mysim/scene.h"
 #include "mysim/simulation.h"
@@ -56,6 +57,7 @@ struct EngineMetrics {
   std::optional<double> settling_time;  // s
   double max_strain = 0.0;
   std::optional<MomentumDrift> momentum;  // where the model conserves momentum
+  std::optional<SelfContact> self_contact;  // cloths and chains (self_contact_metric.h)
 };
 
 // How far two engines' runs of the same scene are apart.

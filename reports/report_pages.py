@@ -1,5 +1,6 @@
 """The report's pages, in order: what the manifest holds decides which exist."""
 import closed_form_page
+import contact_page
 import dashboard
 import glossary_page
 import family_page
@@ -24,6 +25,7 @@ def pages(ctx):
         result.insert(1, verdict_page.page(ctx))
     if any(c["group"] == "suite" for c in m["comparisons"]):
         result.insert(2, closed_form_page.page())
+    result += contact_page.pages(m)
     result += family_page.pages(m)
     result += trade_pages.pages(m)
     result += stability_pages.pages(m)

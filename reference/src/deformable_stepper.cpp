@@ -112,19 +112,7 @@ class DeformableStepper final : public BulletStepper {
         buildSoftBody(info, model, [](btSoftBody&, const mysim::Spring&) { return nullptr; }));
     body_->setActivationState(DISABLE_DEACTIVATION);  // else it sleeps below 0.04 m/s
     body_->getCollisionShape()->setMargin(softBodyMargin(model.colliders));
-    body_->m_cfg.collisions = 0;
-    if (!model.colliders.empty()) {
-      body_->m_cfg.collisions = btSoftBody::fCollision::SDF_RD | btSoftBody::fCollision::SDF_RDN;
-      body_->m_cfg.kKHR = 1.0;  // contact hardness against static bodies: 0.1 by default (soft)
-      if (anyFriction(model.colliders)) body_->m_cfg.kDF = 1.0;  // x each body's friction
-      colliders_ = addColliders(*world_, model.colliders);
-      if (implicit) {
-        notes_.push_back(
-            "implicit mode with static colliders: against a sphere it exploded in most set-ups "
-            "tried (docs/reference.md); a blow-up here is Bullet's, reported as is");
-      }
-    }
-    if (model.self_collision_thickness) enableSelfCollision(*body_, model, notes_);
+    addContacts(model, implicit);
     world_->addSoftBody(body_.get());
 
     // Bullet's mass-spring force where it holds the model (one stiffness for non-bending links,
@@ -170,6 +158,23 @@ class DeformableStepper final : public BulletStepper {
     // One Newton step: Baraff-Witkin's linearised backward Euler, as mysim's backward-euler.
     solver_->tune(settings.cg_tolerance, settings.cg_max_iterations, 1);
     solver_->countIterations(implicit);
+  }
+
+  // The static colliders (node contacts against their SDF, with friction) and self-collision.
+  void addContacts(const mysim::Model& model, bool implicit) {
+    body_->m_cfg.collisions = 0;
+    if (!model.colliders.empty()) {
+      body_->m_cfg.collisions = btSoftBody::fCollision::SDF_RD | btSoftBody::fCollision::SDF_RDN;
+      body_->m_cfg.kKHR = 1.0;  // contact hardness against static bodies: 0.1 by default (soft)
+      if (anyFriction(model.colliders)) body_->m_cfg.kDF = 1.0;  // x each body's friction
+      colliders_ = addColliders(*world_, model.colliders);
+      if (implicit) {
+        notes_.push_back(
+            "implicit mode with static colliders: against a sphere it exploded in most set-ups "
+            "tried (docs/reference.md); a blow-up here is Bullet's, reported as is");
+      }
+    }
+    if (model.self_collision_thickness) enableSelfCollision(*body_, model, notes_);
   }
 
   ~DeformableStepper() override {

@@ -50,6 +50,19 @@ json rows3(const mysim::Vector& flat) {
   return rows;
 }
 
+// The colliders (with their friction), "sphere" for engines written for a model with at most one
+// sphere (filled only when the sphere is the one collider, so such an engine never silently
+// drops another), and self-collision only when asked for (every other model file reads as
+// before it existed).
+void describeContacts(const mysim::Model& model, json& j) {
+  for (const mysim::Collider& c : model.colliders) j["colliders"].push_back(describeCollider(c));
+  if (model.self_collision_thickness) j["self_collision"] = {{"thickness", *model.self_collision_thickness}};
+  if (model.colliders.size() == 1 && std::holds_alternative<mysim::Sphere>(model.colliders[0])) {
+    j["sphere"] = j["colliders"][0];
+    j["sphere"].erase("type");
+  }
+}
+
 }  // namespace
 
 FramePlan framePlan(const mysim::RunSettings& settings, bool every_step) {
@@ -138,15 +151,7 @@ std::expected<void, std::string> writeModelFile(const std::string& dir, const my
                        {"amplitude", model.pin_motion->amplitude},
                        {"frequency", model.pin_motion->frequency}};
   }
-  for (const mysim::Collider& c : model.colliders) j["colliders"].push_back(describeCollider(c));
-  // Only when asked for, so every other model file reads as before self-collision existed.
-  if (model.self_collision_thickness) j["self_collision"] = {{"thickness", *model.self_collision_thickness}};
-  // Engines written for a model with at most one sphere read "sphere": kept for them, filled
-  // only when the sphere is the one collider (so such an engine never silently drops another).
-  if (model.colliders.size() == 1 && std::holds_alternative<mysim::Sphere>(model.colliders[0])) {
-    j["sphere"] = j["colliders"][0];
-    j["sphere"].erase("type");
-  }
+  describeContacts(model, j);
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (model.wind) {

@@ -125,11 +125,40 @@ std::optional<TrajectoryDistance> trajectoryDistance(const mysim::RunRecord& a,
   return d;
 }
 
+namespace {
+
+using E = const EngineMetrics&;
+using V = std::optional<double>;
+
+// Contact: penetration of colliders, and the mesh against itself.
+std::vector<MetricInfo> contactMetrics() {
+  return {
+      // Undefined without a collider: 0 there would pass any bound for nothing measured.
+      {"penetration_max", false, "m", "deepest node inside a collider, any frame",
+       [](E m) { return m.penetration_deepest.empty() ? V() : V(m.penetration_max); }},
+      {"penetration_mean_max", false, "m", "largest per-frame mean depth of penetrating nodes",
+       [](E m) { return m.penetration_deepest.empty() ? V() : V(m.penetration_mean_max); }},
+      {"self_intersections", false, "1",
+       "most pairs of a cloth's triangles (sharing no vertex) that cross, in any frame",
+       [](E m) { return m.self_contact && m.self_contact->intersections ? V(*m.self_contact->intersections) : V(); },
+       nullptr, false, true},
+      {"self_intersections_time", false, "s", "the first frame with that many",
+       [](E m) { return m.self_contact && m.self_contact->intersections ? V(m.self_contact->intersections_time) : V(); }},
+      {"self_distance_min", false, "m",
+       "smallest distance of a node to a triangle not around it (a chain: of two links sharing no "
+       "node), any frame",
+       [](E m) { return m.self_contact ? m.self_contact->distance_min : V(); }},
+      {"self_distance_min_time", false, "s", "when it was smallest",
+       [](E m) { return m.self_contact && m.self_contact->distance_min ? V(m.self_contact->distance_time) : V(); }},
+  };
+}
+
+}  // namespace
+
 const std::vector<MetricInfo>& metricCatalog() {
-  using E = const EngineMetrics&;
   using P = const PairMetrics&;
-  using V = std::optional<double>;
-  static const std::vector<MetricInfo> catalog = {
+  static const std::vector<MetricInfo> catalog = [] {
+    std::vector<MetricInfo> rows = {
       {"blowup", false, "1/0", "1 if the run blew up",
        [](E m) { return V(m.blew_up ? 1.0 : 0.0); }},
       {"closed_form_error", false, "m or rel", "error against the scene's closed form",
@@ -149,24 +178,10 @@ const std::vector<MetricInfo>& metricCatalog() {
       {"drape_folds", false, "1", "folds (lobes) of a draped disc's outline at the end",
        [](E m) { return m.drape_folds; }, nullptr, true, true},
       {"sag_free_middle", false, "m", "middle of the free edge below the pins at the end",
-       [](E m) { return m.sag_free_middle; }},
-      // Undefined without a collider: 0 there would pass any bound for nothing measured.
-      {"penetration_max", false, "m", "deepest node inside a collider, any frame",
-       [](E m) { return m.penetration_deepest.empty() ? V() : V(m.penetration_max); }},
-      {"penetration_mean_max", false, "m", "largest per-frame mean depth of penetrating nodes",
-       [](E m) { return m.penetration_deepest.empty() ? V() : V(m.penetration_mean_max); }},
-      {"self_intersections", false, "1",
-       "most pairs of a cloth's triangles (sharing no vertex) that cross, in any frame",
-       [](E m) { return m.self_contact && m.self_contact->intersections ? V(*m.self_contact->intersections) : V(); },
-       nullptr, false, true},
-      {"self_intersections_time", false, "s", "the first frame with that many",
-       [](E m) { return m.self_contact && m.self_contact->intersections ? V(m.self_contact->intersections_time) : V(); }},
-      {"self_distance_min", false, "m",
-       "smallest distance of a node to a triangle not around it (a chain: of two links sharing no "
-       "node), any frame",
-       [](E m) { return m.self_contact ? m.self_contact->distance_min : V(); }},
-      {"self_distance_min_time", false, "s", "when it was smallest",
-       [](E m) { return m.self_contact && m.self_contact->distance_min ? V(m.self_contact->distance_time) : V(); }},
+       [](E m) { return m.sag_free_middle; }}};
+    const std::vector<MetricInfo> contact = contactMetrics();
+    rows.insert(rows.end(), contact.begin(), contact.end());
+    rows.insert(rows.end(), {
       {"energy_drift_max", false, "rel", "max |E(t) - E(0)| / E_ref",
        [](E m) { return m.drift.total.empty() ? V() : V(m.drift.max_abs_total); }},
       {"energy_rise", false, "J", "largest rise of total energy above an earlier low",
@@ -199,8 +214,9 @@ const std::vector<MetricInfo>& metricCatalog() {
       {"sag_difference", true, "m", "difference of the final lowest-point sag", nullptr,
        [](P m) { return V(m.sag_difference); }},
       {"trajectory_rms_max", true, "m", "max over frames of the RMS node distance", nullptr,
-       [](P m) { return m.trajectory_rms_max; }},
-  };
+       [](P m) { return m.trajectory_rms_max; }}});
+    return rows;
+  }();
   return catalog;
 }
 

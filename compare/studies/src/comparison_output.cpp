@@ -76,6 +76,7 @@ json modelJson(const mysim::Model& model) {
             {"grid", json()}};
   for (const mysim::Collider& c : model.colliders) j["colliders"].push_back(describeCollider(c));
   if (model.grid) j["grid"] = {{"rows", model.grid->rows}, {"cols", model.grid->cols}};
+  if (model.self_collision_thickness) j["self_collision"] = {{"thickness", *model.self_collision_thickness}};
   return j;
 }
 

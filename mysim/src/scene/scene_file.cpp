@@ -103,6 +103,21 @@ bool isPlainName(const std::string& name) {
   });
 }
 
+// "sphere" (the seed's one sphere, kept as its own field), then "colliders".
+void readColliders(FieldReader& top, Scene& scene) {
+  if (top.has("sphere")) {
+    FieldReader r = top.object("sphere");
+    Sphere sphere = Sphere::read(r);
+    sphere.friction = readFriction(r);
+    scene.colliders.push_back(sphere);
+    r.refuseUnknown("docs/scenes.md");
+  }
+  if (top.has("colliders")) {
+    top.objects("colliders",
+                [&](FieldReader& r, std::size_t) { scene.colliders.push_back(readCollider(r)); });
+  }
+}
+
 // "system": which kind, and its own fields.
 void readSystem(FieldReader& top, Scene& scene) {
   FieldReader system = top.object("system");
@@ -247,17 +262,7 @@ Scene readScene(const json& root, const std::string& source,
     readForces(forces, scene);
     forces.refuseUnknown("docs/scenes.md");
   }
-  if (top.has("sphere")) {  // the seed's one sphere, kept as its own field
-    FieldReader r = top.object("sphere");
-    Sphere sphere = Sphere::read(r);
-    sphere.friction = readFriction(r);
-    scene.colliders.push_back(sphere);
-    r.refuseUnknown("docs/scenes.md");
-  }
-  if (top.has("colliders")) {
-    top.objects("colliders",
-                [&](FieldReader& r, std::size_t) { scene.colliders.push_back(readCollider(r)); });
-  }
+  readColliders(top, scene);
 
   readIntegrator(top, scene);
   if (scene.cloth_material) applyMaterialForces(scene);

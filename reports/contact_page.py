@@ -16,28 +16,34 @@ def contact_of(model):
     for c in model.get("colliders", []):
         f = c.get("friction")
         if f:
-            parts.append(f"{c['type']} friction {f['static']:g}/{f['kinetic']:g}")
+            parts.append(f"{c['type']} mu {f['static']:g}/{f['kinetic']:g}")
     if model.get("self_collision"):
         parts.append(f"self-collision {1e3 * model['self_collision']['thickness']:g} mm")
-    return ", ".join(parts)
+    return " + ".join(parts)
+
+
+def crossings_of(e):
+    """'N cross, D mm' (a chain: 'nearest D mm'), or None without a self-contact metric."""
+    crossings, nearest = e.get("self_intersections"), e.get("self_distance_min")
+    if crossings is None:
+        return f"nearest {1e3 * nearest:.2g} mm" if nearest is not None else None
+    return f"{crossings:g} cross" + (f", {1e3 * nearest:.2g} mm" if nearest is not None else "")
 
 
 def cell_of(e, has_self):
-    """(text, holds) for one engine on one scene: the closed-form error of a friction scene, the
-    crossing pairs and nearest approach of a self-colliding one."""
+    """(text, holds) for one engine on one scene: self-collision judged by its crossings (a
+    chain: held when its links stayed apart), friction by the block's closed form where the scene
+    has it; otherwise the crossings shown, not judged (holds None)."""
     if e.get("blowup_time") is not None:
         return "blew up", False
-    if has_self:
-        crossings, nearest = e.get("self_intersections"), e.get("self_distance_min")
-        if crossings is None:
-            text = f"nearest {1e3 * nearest:.2g} mm" if nearest is not None else "-"
-            return text, nearest is not None
-        return f"{crossings:g} cross" + (f", {1e3 * nearest:.2g} mm" if nearest is not None else ""), crossings == 0
     error, form = e.get("closed_form_error"), e.get("closed_form")
-    if error is None or not form:
-        return "-", False
-    exact = form["exact"]
-    return f"{error:.2g} m", error <= (SLIDE_RELATIVE * exact if exact > 0 else STUCK)
+    if has_self:
+        crossings = e.get("self_intersections")
+        return crossings_of(e) or "-", (crossings == 0 if crossings is not None else e.get("self_distance_min") is not None)
+    if error is not None and form:
+        exact = form["exact"]
+        return f"{error:.2g} m", error <= (SLIDE_RELATIVE * exact if exact > 0 else STUCK)
+    return crossings_of(e) or "-", None
 
 
 def rows_of(m):
@@ -98,7 +104,8 @@ def pages(m):
         after v0^2 / (2 mu_k g)); green within {SLIDE_RELATIVE:.0%} of the distance, or within
         {STUCK:g} m of none when it sticks. Self-collision scenes: the most crossing triangle pairs
         in any frame ('cross', green at 0) and the nearest a node came to a triangle not around it
-        (a chain: two links). 'refused': the engine cannot apply that contact (Bullet has one
+        (a chain: two links). A scene with neither (a fold without self-collision) shows its crossings
+        uncoloured, to be read against its twin with self-collision. 'refused': the engine cannot apply that contact (Bullet has one
         friction coefficient and no chain self-collision; the classic solver no self-collision).
         bullet-classic's friction damps velocity rather than following Coulomb (docs/reference.md)."""
                                ).replace("\n", " ")

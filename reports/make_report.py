@@ -46,10 +46,13 @@ def frame(fig, page, number, total, stamp, notes):
     fig.text(0.5, 0.955, page.title, ha="center", va="center", fontsize=14, weight="bold")
     caption = " ".join([page.caption] + list(notes or []))
     lines = textwrap.wrap(caption, 165)
-    if len(lines) > 5:  # a long caption (many notes) in smaller type, above the stamp
+    # A long caption (many notes) in smaller type, above the stamp: 200 characters of 7-point type
+    # fill the width 165 of 8.5-point do. (The type follows the first wrap: rewrapped at 200, a
+    # six-line caption became five lines and was drawn at 8.5 points, cut at the right edge.)
+    small = len(lines) > 5
+    if small:
         lines = textwrap.wrap(caption, 200)
-    fig.text(0.06, 0.155, "\n".join(lines), va="top", fontsize=8.5 if len(lines) <= 5 else 7,
-             color="0.15")
+    fig.text(0.06, 0.155, "\n".join(lines), va="top", fontsize=7 if small else 8.5, color="0.15")
     if page.command:  # under the title: the page's own command, apart from the caption's text
         # A long one (refine over several scenes) in two lines of smaller type, never cut at the edges.
         command = f"reproduce: {page.command}"

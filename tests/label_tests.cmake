@@ -55,6 +55,17 @@ function(discover_labelled_tests target)
     set(_list ${target}_${_key}_TESTS)
     gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60 TEST_FILTER "${_filter}" TEST_LIST ${_list})
     string(REPLACE "," ";" _labels "${_label}")
+    # The quick tier (README): every gtest suite that needs no Bullet, no other program, no
+    # whole-run study: what a developer runs on every change (ctest -L quick, under a minute).
+    set(_quick TRUE)
+    foreach(_heavy IN ITEMS bullet external slow tooling cli report viewer gate slurm)
+      if(_heavy IN_LIST _labels)
+        set(_quick FALSE)
+      endif()
+    endforeach()
+    if(_quick)
+      list(APPEND _labels quick)
+    endif()
     set(_script ${CMAKE_CURRENT_BINARY_DIR}/${target}_${_key}_labels.cmake)
     file(WRITE ${_script}
          "if(${_list})\n  set_tests_properties(\${${_list}} PROPERTIES LABELS \"${_labels}\")\nendif()\n")

@@ -126,6 +126,19 @@ TEST_P(FrictionInEveryIntegrator, ASlidingParticleStopsAtTheClosedFormDistanceAn
   }
 }
 
+// With drag the block still moves as one (equal masses): dv/dt = a - k v with k = drag / m; the
+// closed form's exponentials hold a slide down 30 degrees and a stop from 2 m/s within 1 %.
+TEST_P(FrictionInEveryIntegrator, DragSlowsTheSlideAndTheStopAsTheClosedFormSays) {
+  const EngineRegistry registry;
+  for (auto [degrees, speed] : {std::pair{30.0, 0.0}, {0.0, 2.0}}) {
+    auto scene = mysim::parseScene(inclineScene(degrees, 0.3, 0.25, false, GetParam(), speed), "drag.json");
+    ASSERT_TRUE(scene) << scene.error();
+    scene->drag = 0.05;  // N s/m on 0.1 kg: k = 0.5 /s, a tenth of the speed lost in 0.2 s
+    const Judged j = runAndJudge(registry, "mysim", *scene);
+    expectClosedForm(j, false, GetParam() + ": with drag, " + std::to_string(degrees) + " deg");
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Friction, FrictionInEveryIntegrator,
                          ::testing::ValuesIn(mysim::integratorNames()),
                          [](const auto& info) {

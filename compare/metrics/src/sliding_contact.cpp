@@ -42,9 +42,13 @@ const mysim::Plane* restingPlane(const mysim::Model& model, const mysim::Particl
 // Why the body on the plane is no rigid block under gravity and friction, if it is not.
 std::optional<std::string> notABlock(const mysim::Model& model, const mysim::ParticleRows& first,
                                      double pressing) {
-  if (model.wind || model.drag > 0.0) {
-    return std::string(model.wind ? "wind" : "drag") +
-           " acts on the body on the plane: its closed form is for gravity and friction only";
+  if (model.wind) return std::string("wind acts on the body on the plane: its closed form is for gravity, drag and friction");
+  if (model.drag > 0.0) {
+    for (int p = 1; p < model.particleCount(); ++p) {
+      if (std::abs(model.mass[p] - model.mass[0]) > 1e-12 * model.mass[0]) {
+        return std::string("drag on unequal masses slows them unequally: the body deforms, no rigid block");
+      }
+    }
   }
   if (!(pressing > 0.0)) return std::string("gravity does not press the body onto the plane");
   const int n = model.particleCount();
@@ -64,20 +68,35 @@ std::optional<std::string> notABlock(const mysim::Model& model, const mysim::Par
   return std::nullopt;
 }
 
-// Distance along a line after t: start speed u >= 0, then acceleration a, stopping at 0 (when
-// a < 0) at the time returned in `stopped_at`.
-double lineDistance(double u, double a, double t, std::optional<double>& stopped_at) {
-  if (a < 0.0 && u + a * t <= 0.0) {
-    stopped_at = u / -a;
-    return u * u / (2.0 * -a);
+// Distance along a line after t: start speed u >= 0, then acceleration a less the drag rate k
+// times the speed (dv/dt = a - k v; k = 0 without drag), stopping at v = 0 when a < 0, at the time
+// returned in `stopped_at`.
+double lineDistance(double u, double a, double k, double t, std::optional<double>& stopped_at) {
+  if (k == 0.0) {
+    if (a < 0.0 && u + a * t <= 0.0) {
+      stopped_at = u / -a;
+      return u * u / (2.0 * -a);
+    }
+    return u * t + 0.5 * a * t * t;
   }
-  return u * t + 0.5 * a * t * t;
+  // v(t) = a/k + (u - a/k) e^(-k t); s(t) = (a/k) t + (u - a/k) (1 - e^(-k t)) / k.
+  const double terminal = a / k;
+  auto distance = [&](double time) { return terminal * time - (u - terminal) * std::expm1(-k * time) / k; };
+  if (a < 0.0) {
+    const double stop = std::log1p(-u * k / a) / k;
+    if (stop <= t) {
+      stopped_at = stop;
+      return distance(stop);
+    }
+  }
+  return distance(t);
 }
 
 mysim::Vec3 fromRest(const SlidingBlock& b, double t) {
   const double pull = b.along_plane.norm();
   if (pull <= b.friction.static_coefficient * b.pressing || t <= 0.0) return mysim::Vec3::Zero();
-  return 0.5 * (pull - b.friction.kinetic * b.pressing) * t * t * (b.along_plane / pull);
+  std::optional<double> never;
+  return lineDistance(0.0, pull - b.friction.kinetic * b.pressing, b.drag_rate, t, never) * (b.along_plane / pull);
 }
 
 }  // namespace
@@ -87,7 +106,7 @@ mysim::Vec3 slideDisplacement(const SlidingBlock& b, double t) {
   if (u == 0.0) return fromRest(b, t);
   const mysim::Vec3 e = b.velocity / u;
   std::optional<double> stopped_at;
-  const double s = lineDistance(u, b.along_plane.dot(e) - b.friction.kinetic * b.pressing, t, stopped_at);
+  const double s = lineDistance(u, b.along_plane.dot(e) - b.friction.kinetic * b.pressing, b.drag_rate, t, stopped_at);
   if (!stopped_at) return s * e;
   return s * e + fromRest(b, t - *stopped_at);
 }
@@ -105,7 +124,7 @@ std::optional<ClosedFormResult> slidingError(const mysim::Model& model, const my
     return mysim::Vec3(c / mass);
   };
   SlidingBlock block{centroid(first), rowVelocity(first, 0), model.gravity + pressing * plane->normal,
-                     pressing, plane->friction};
+                     pressing, plane->friction, model.drag / model.mass[0]};
   block.velocity -= block.velocity.dot(plane->normal) * plane->normal;
   const double u = block.velocity.norm(), pull = block.along_plane.norm();
   if (u > 0.0 && pull > 1e-12 * model.gravity.norm() &&

@@ -68,6 +68,7 @@ void addCompletionCommand(CLI::App& app, int& exit_code);
 void addEngineCommand(CLI::App& app, int& exit_code);
 void addRefineCommand(CLI::App& app, int& exit_code);
 void addRoundoffCommand(CLI::App& app, int& exit_code);
+void addCapstanCommand(CLI::App& app, int& exit_code);
 void addTradeCommand(CLI::App& app, int& exit_code);
 void addViewCommand(CLI::App& app, int& exit_code);  // only with SPRINGCHECK_HAS_VIEWER
 

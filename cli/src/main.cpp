@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   springcheck::addStabilityCommand(app, exit_code);
   springcheck::addRefineCommand(app, exit_code);
   springcheck::addRoundoffCommand(app, exit_code);
+  springcheck::addCapstanCommand(app, exit_code);
   springcheck::addTradeCommand(app, exit_code);
   springcheck::addRecommendCommand(app, exit_code);
   springcheck::addReportCommand(app, exit_code);

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "compare/metrics/cantilever_metric.h"
+#include "compare/metrics/capstan.h"
 #include "compare/metrics/sliding_contact.h"
 
 namespace springcheck {
@@ -350,6 +351,7 @@ ClosedFormResult closedFormError(const mysim::Model& model, const mysim::RunReco
   }
   if (model.isCircle()) return circleError(model, run);
   if (auto sliding = slidingError(model, run)) return *sliding;
+  if (auto capstan = capstanError(model, run)) return *capstan;
   if (auto cantilever = cantileverReference(model)) {
     const auto reading = readCantilever(model, run.frames.back());
     const double exact = cantilever->overhang * cantilever->elastica.drop;

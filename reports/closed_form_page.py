@@ -96,6 +96,6 @@ def page():
     return Page("closed_forms", "How far is each engine from the exact answers?",
                 "Each suite scene with a closed form (the column 'closed form' names it: the circle, the pendulum's "
                 "period, the hanging chain and the two-pin catenary at rest, the damped oscillator, the taut "
-                "chain's mode, the clamped strip's heavy elastica, a body on a plane with friction), and each engine's error against it. Scenes "
+                "chain's mode, the clamped strip's heavy elastica, a body on a plane with friction, the capstan), and each engine's error against it. Scenes "
                 "without one are listed below with the reason. Your own engine is a column like any other; its "
                 "gate is in the tolerances file.", draw)

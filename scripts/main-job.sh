@@ -110,15 +110,6 @@ stage "stability large steps" $B stability --scene scenes/matched/cloth_hanging.
   --name cloth_hanging_large_steps \
   --engines mysim:xpbd,mysim:local-global,mysim:vbd,mysim:backward-euler --stiffness-scales 1,100 \
   --mass-ratios 1,1e4 --max-h-omega 3000 --out "$OUT/stability" >/dev/null
-# Contact at the extremes: every engine's largest stable step on the friction incline and on the
-# self-colliding fold (as written; 14 s and 45 s on a 2-core EPYC).
-stability_contact() {
-  for scene in incline_cloth_slides cloth_fold_on_ground; do
-    $B stability --scene "scenes/contact/$scene.json" --stiffness-scales 1 --mass-ratios 1 \
-      --out "$OUT/stability" >/dev/null
-  done
-}
-stage "stability contact" stability_contact
 # Mesh refinement: the cantilever against the elastica, the flex-spring strip, the drape test,
 # the cable against the continuous catenary.
 stage refine $B refine scenes/material/cantilever_strip.json \

@@ -2,7 +2,11 @@
 // triangle pairs at every frame, no node nearer a triangle than most of the thickness), in every
 // stable mysim integrator and in bullet-deformable; with it off the metric finds the crossings,
 // so the metric is tested both ways. The proximity queries against brute force.
-// ctest-label: physics,bullet
+// The whole runs (every integrator, every height, Bullet) are slow under the sanitizers (156 s for
+// the integrators alone): the Release pass runs them; the sanitizer pass runs SelfCollisionOpening,
+// the fold's first crossings in one integrator, which reaches the same code.
+// ctest-label: physics,bullet,slow
+// ctest-label SelfCollisionOpening: physics
 // ctest-label SelfCollisionInput: validation,bullet,external
 // ctest-label Proximity: unit
 #include <gtest/gtest.h>
@@ -52,6 +56,18 @@ TEST(SelfCollision, AClothFoldedOntoTheGroundNeverCrossesItselfInEveryStableInte
     ASSERT_TRUE(c.distance_min) << integrator;
     EXPECT_GT(*c.distance_min, kKeptApart * *scene.self_collision_thickness) << integrator;
   }
+}
+
+// The fold up to its first crossings without self-collision (0.95 s): none with it, some without.
+TEST(SelfCollisionOpening, TheFoldsFirstLayersStayApartWithItAndCrossWithout) {
+  const EngineRegistry registry;
+  mysim::Scene scene = contactScene("cloth_fold_on_ground");
+  scene.duration = 0.95;
+  const SelfContact on = selfContactOf(registry, "mysim", scene);
+  EXPECT_EQ(on.intersections.value_or(-1), 0);
+  EXPECT_GT(on.distance_min.value_or(0.0), kKeptApart * *scene.self_collision_thickness);
+  scene.self_collision_thickness.reset();
+  EXPECT_GT(selfContactOf(registry, "mysim", scene).intersections.value_or(0), 0);
 }
 
 // Other heights and thicknesses than the shipped scene's, with and without self-collision.

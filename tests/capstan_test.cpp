@@ -10,6 +10,7 @@
 
 #include "compare/studies/capstan_study.h"
 #include "mysim/scene_file.h"
+#include "contact_scenes.h"
 #include "source_root.h"
 
 namespace springcheck {
@@ -18,17 +19,11 @@ namespace {
 // The bound on mysim's holding load against the closed form.
 constexpr double kWithin = 0.02;
 
-mysim::Scene capstanScene(const std::string& name) {
-  auto scene = mysim::loadScene(test::kRoot + "/scenes/contact/" + name + ".json");
-  EXPECT_TRUE(scene) << scene.error();
-  return *scene;
-}
-
 TEST(Capstan, MysimsHoldingLoadIsWithinTwoPercentOfEulerEytelweinAtThreeWrapAngles) {
   const EngineRegistry registry;
   for (auto [name, degrees] : {std::pair{"capstan_half_turn", 180.0}, {"capstan_three_eighths_turn", 135.0},
                                {"capstan_quarter_turn", 90.0}}) {
-    auto m = measureCapstan(registry, "mysim", capstanScene(name));
+    auto m = measureCapstan(registry, "mysim", test::contactScene(name));
     ASSERT_TRUE(m) << name << ": " << m.error();
     EXPECT_NEAR(m->capstan.wrap * 180.0 / std::numbers::pi, degrees, 0.5) << name << ": the wrap read from the start";
     EXPECT_LT(std::abs(m->error()), kWithin) << name << ": holds " << m->measured_load << " kg, closed form "
@@ -79,7 +74,7 @@ TEST(Capstan, AnotherCoefficientOnAnotherSphereHoldsWithinTwoPercent) {
 // one past it has no closed form and says it slips.
 TEST(Capstan, ARunWithinTheHoldingLoadStaysAndOnePastItIsSaidToSlip) {
   const EngineRegistry registry;
-  mysim::Scene scene = capstanScene("capstan_half_turn");
+  mysim::Scene scene = test::contactScene("capstan_half_turn");
   const mysim::Model model = mysim::buildModel(scene);
   auto run = registry.run("mysim", scene);
   ASSERT_TRUE(run) << run.error().message;

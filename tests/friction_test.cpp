@@ -16,6 +16,7 @@
 #include "compare/metrics/closed_form.h"
 #include "mysim/integrator.h"
 #include "mysim/scene_file.h"
+#include "contact_scenes.h"
 #include "source_root.h"
 
 namespace springcheck {
@@ -148,12 +149,6 @@ INSTANTIATE_TEST_SUITE_P(Friction, FrictionInEveryIntegrator,
                            return name;
                          });
 
-mysim::Scene shipped(const std::string& name) {
-  auto scene = mysim::loadScene(test::kRoot + "/scenes/contact/" + name + ".json");
-  EXPECT_TRUE(scene) << scene.error();
-  return *scene;
-}
-
 // The cloth (144 nodes, springs at rest) moves as one rigid sheet: sticking at 30 degrees with
 // mu 0.7, held by mu_s 0.8 at 35 degrees although mu_k 0.5 would slide, sliding at 35 with 0.5.
 // Forward Euler is left out: it is unstable on undamped springs at any step (the catalogue).
@@ -164,7 +159,7 @@ TEST(FrictionOfACloth, OnAnInclineItSticksOrSlidesAsOneRigidSheetInEveryStableIn
     if (integrator == "euler") continue;
     for (auto [name, stuck] : {std::pair{"incline_cloth_sticks", true}, {"incline_cloth_held_by_static", true},
                                {"incline_cloth_slides", false}}) {
-      mysim::Scene scene = shipped(name);
+      mysim::Scene scene = test::contactScene(name);
       scene.integrator.name = integrator;
       expectClosedForm(runAndJudge(registry, "mysim", scene), stuck, integrator + " on " + name);
     }
@@ -182,15 +177,15 @@ TEST(Friction, BulletDeformableAndImplicitFollowCoulombAndTheClassicSolverDampsI
   for (const char* engine : {"bullet-deformable", "bullet-implicit"}) {
     const double stuck_bound = std::string(engine) == "bullet-deformable" ? kStuck : 1e-4;
     for (const char* name : {"incline_particle_sticks", "incline_cloth_sticks"}) {
-      const Judged j = runAndJudge(registry, engine, shipped(name));
+      const Judged j = runAndJudge(registry, engine, test::contactScene(name));
       EXPECT_LT(j.error.error, stuck_bound) << engine << " on " << name;
     }
     for (const char* name : {"incline_particle_slides", "incline_cloth_slides", "stopping_particle"}) {
-      const Judged j = runAndJudge(registry, engine, shipped(name));
+      const Judged j = runAndJudge(registry, engine, test::contactScene(name));
       EXPECT_LT(j.error.error / j.error.exact, kSlideRelative) << engine << " on " << name;
     }
   }
-  const Judged classic = runAndJudge(registry, "bullet-classic", shipped("stopping_particle"));
+  const Judged classic = runAndJudge(registry, "bullet-classic", test::contactScene("stopping_particle"));
   const double travelled = classic.error.exact - classic.error.error;  // it slid the same way
   EXPECT_LT(travelled, 0.02 * classic.error.exact) << "the classic solver's friction damps the slide";
 }
@@ -201,7 +196,7 @@ TEST(FrictionInput, TheExampleExternalEngineAppliesTheProtocolsFrictionToTheBit)
   EngineRegistry registry;
   ASSERT_TRUE(registry.addEnginesFile(test::kRoot + "/examples/external/engines.json"));
   for (const char* name : {"incline_cloth_slides", "stopping_particle"}) {
-    mysim::Scene scene = shipped(name);
+    mysim::Scene scene = test::contactScene(name);
     scene.integrator.name = "symplectic-euler";
     const auto ours = registry.run("mysim", scene);
     const auto theirs = registry.run("pysim", scene);
@@ -246,7 +241,7 @@ TEST(FrictionInput, EveryBadCoefficientIsRefusedNamingTheFileAndTheField) {
 TEST(FrictionInput, AnEngineThatCannotApplyTheFrictionRefusesTheScene) {
   EngineRegistry registry;
   ASSERT_TRUE(registry.addEnginesFile(test::kRoot + "/tests/data/declared_engines.json"));
-  const mysim::Scene scene = shipped("incline_cloth_held_by_static");
+  const mysim::Scene scene = test::contactScene("incline_cloth_held_by_static");
   for (const char* engine : {"bullet-deformable", "bullet-implicit", "bullet-classic", "pysim-static"}) {
     auto run = registry.run(engine, scene);
     ASSERT_FALSE(run) << engine << " ran a scene it cannot apply";

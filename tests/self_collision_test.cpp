@@ -18,6 +18,7 @@
 #include "mysim/integrator.h"
 #include "mysim/proximity.h"
 #include "mysim/scene_file.h"
+#include "contact_scenes.h"
 #include "source_root.h"
 
 namespace springcheck {
@@ -27,12 +28,6 @@ namespace {
 // pushes leave pairs at 0.89 to 0.97 of it in the fold (XPBD 4.47 mm, symplectic Euler 4.79 mm of
 // 5 mm), bullet-deformable 0.60 under the wall; 0.5 fails a contact lost, not a pass short.
 constexpr double kKeptApart = 0.5;
-
-mysim::Scene contactScene(const std::string& name) {
-  auto scene = mysim::loadScene(test::kRoot + "/scenes/contact/" + name + ".json");
-  EXPECT_TRUE(scene) << scene.error();
-  return *scene;
-}
 
 SelfContact selfContactOf(const EngineRegistry& registry, const std::string& spec, const mysim::Scene& scene) {
   auto run = registry.run(spec, scene);
@@ -49,7 +44,7 @@ TEST(SelfCollision, AClothFoldedOntoTheGroundNeverCrossesItselfInEveryStableInte
   const EngineRegistry registry;
   for (const std::string& integrator : mysim::integratorNames()) {
     if (integrator == "euler" || integrator == "trapezoidal") continue;
-    mysim::Scene scene = contactScene("cloth_fold_on_ground");
+    mysim::Scene scene = test::contactScene("cloth_fold_on_ground");
     scene.integrator.name = integrator;
     const SelfContact c = selfContactOf(registry, "mysim", scene);
     EXPECT_EQ(c.intersections.value_or(-1), 0) << integrator << ": first at t = " << c.intersections_time;
@@ -61,7 +56,7 @@ TEST(SelfCollision, AClothFoldedOntoTheGroundNeverCrossesItselfInEveryStableInte
 // The fold up to its first crossings without self-collision (0.95 s): none with it, some without.
 TEST(SelfCollisionOpening, TheFoldsFirstLayersStayApartWithItAndCrossWithout) {
   const EngineRegistry registry;
-  mysim::Scene scene = contactScene("cloth_fold_on_ground");
+  mysim::Scene scene = test::contactScene("cloth_fold_on_ground");
   scene.duration = 0.95;
   const SelfContact on = selfContactOf(registry, "mysim", scene);
   EXPECT_EQ(on.intersections.value_or(-1), 0);
@@ -75,7 +70,7 @@ TEST(SelfCollision, OtherHeightsAndThicknessesHoldAndTheMetricFindsTheCrossingsW
   const EngineRegistry registry;
   for (double lift : {0.1, 0.6}) {
     for (double thickness : {0.003, 0.008}) {
-      mysim::Scene scene = contactScene("cloth_fold_on_ground");
+      mysim::Scene scene = test::contactScene("cloth_fold_on_ground");
       scene.cloth.origin.y() = 1.0 + lift;  // the lower edge `lift` above the ground
       scene.self_collision_thickness = thickness;
       const SelfContact on = selfContactOf(registry, "mysim", scene);
@@ -90,12 +85,12 @@ TEST(SelfCollision, OtherHeightsAndThicknessesHoldAndTheMetricFindsTheCrossingsW
 
 TEST(SelfCollision, TheShippedScenesWithoutItPassThroughThemselvesAndWithItDoNot) {
   const EngineRegistry registry;
-  EXPECT_GT(selfContactOf(registry, "mysim", contactScene("cloth_fold_without_self_collision")).intersections.value_or(0), 0);
-  mysim::Scene wall = contactScene("cloth_over_thin_wall");
+  EXPECT_GT(selfContactOf(registry, "mysim", test::contactScene("cloth_fold_without_self_collision")).intersections.value_or(0), 0);
+  mysim::Scene wall = test::contactScene("cloth_over_thin_wall");
   EXPECT_EQ(selfContactOf(registry, "mysim", wall).intersections.value_or(-1), 0);
   wall.self_collision_thickness.reset();
   EXPECT_GT(selfContactOf(registry, "mysim", wall).intersections.value_or(0), 0) << "the skirts cross";
-  mysim::Scene pile = contactScene("chain_pile");
+  mysim::Scene pile = test::contactScene("chain_pile");
   const double thickness = *pile.self_collision_thickness;
   EXPECT_GT(selfContactOf(registry, "mysim", pile).distance_min.value_or(0.0), kKeptApart * thickness);
   pile.self_collision_thickness.reset();
@@ -108,21 +103,21 @@ TEST(SelfCollision, TheShippedScenesWithoutItPassThroughThemselvesAndWithItDoNot
 TEST(SelfCollision, BulletDeformableKeepsTheFoldApartAndItsImplicitModeLeaksAFewPairs) {
   const EngineRegistry registry;
   for (const char* name : {"cloth_fold_on_ground", "cloth_over_thin_wall"}) {
-    EXPECT_EQ(selfContactOf(registry, "bullet-deformable", contactScene(name)).intersections.value_or(-1), 0) << name;
+    EXPECT_EQ(selfContactOf(registry, "bullet-deformable", test::contactScene(name)).intersections.value_or(-1), 0) << name;
   }
-  EXPECT_LE(selfContactOf(registry, "bullet-implicit", contactScene("cloth_fold_on_ground")).intersections.value_or(99), 10);
+  EXPECT_LE(selfContactOf(registry, "bullet-implicit", test::contactScene("cloth_fold_on_ground")).intersections.value_or(99), 10);
 }
 
 TEST(SelfCollisionInput, ABadThicknessOrASystemWithoutAMeshIsRefusedNamingTheField) {
   EngineRegistry registry;
   ASSERT_TRUE(registry.addEnginesFile(test::kRoot + "/examples/external/engines.json"));
-  mysim::Scene scene = contactScene("cloth_fold_on_ground");
+  mysim::Scene scene = test::contactScene("cloth_fold_on_ground");
   scene.self_collision_thickness = 0.2;  // more than the 1/11 m cell
   auto thick = registry.run("mysim", scene);
   ASSERT_FALSE(thick);
   EXPECT_NE(thick.error().message.find("system.self_collision.thickness"), std::string::npos) << thick.error().message;
   for (const char* engine : {"bullet-classic", "pysim"}) {
-    auto refused = registry.run(engine, contactScene("cloth_fold_on_ground"));
+    auto refused = registry.run(engine, test::contactScene("cloth_fold_on_ground"));
     ASSERT_FALSE(refused) << engine;
     EXPECT_EQ(refused.error().kind, EngineError::Kind::Refused) << engine;
     EXPECT_NE(refused.error().message.find("self"), std::string::npos) << refused.error().message;

@@ -18,18 +18,6 @@ constexpr double kEndMassFactor = 10.0;
 
 mysim::Vec3 rowPosition(const mysim::ParticleRows& frame, int p) { return frame.row(p).head<3>().transpose(); }
 
-bool isPath(const mysim::Model& model) {
-  const int n = model.particleCount();
-  if (n < 4 || static_cast<int>(model.springs.size()) != n - 1) return false;
-  std::vector<char> link(n, 0);
-  for (const mysim::Spring& s : model.springs) {
-    const int low = std::min(s.i, s.j);
-    if (std::abs(s.i - s.j) != 1 || link[low]) return false;
-    link[low] = 1;
-  }
-  return true;
-}
-
 // The one collider with friction, if it is the only one and a sphere.
 const mysim::Sphere* frictionSphere(const mysim::Model& model) {
   const mysim::Sphere* found = nullptr;
@@ -57,7 +45,8 @@ double Capstan::holdingLoad(const mysim::Model& model) const {
 }
 
 std::optional<Capstan> capstanOf(const mysim::Model& model, const mysim::ParticleRows& first) {
-  if (model.isCircle() || model.gravity.norm() == 0.0 || !isPath(model) || !heavyEnds(model)) return std::nullopt;
+  if (model.isCircle() || model.gravity.norm() == 0.0 || model.particleCount() < 4) return std::nullopt;
+  if (!isIndexOrderedPath(model) || !heavyEnds(model)) return std::nullopt;
   if (std::any_of(model.pinned.begin(), model.pinned.end(), [](char p) { return p != 0; })) return std::nullopt;
   const mysim::Sphere* sphere = frictionSphere(model);
   if (!sphere) return std::nullopt;

@@ -20,6 +20,20 @@ double ellipticK(double k) {
   return std::numbers::pi / (2.0 * a);
 }
 
+// Whether the springs join particle p to p + 1 for every p and nothing else (in any spring
+// order): a chain whatever the scene called it (a "chain", or a particle list laid out as one).
+bool isIndexOrderedPath(const mysim::Model& model) {
+  const int n = model.particleCount();
+  if (static_cast<int>(model.springs.size()) != n - 1) return false;
+  std::vector<char> link(n, 0);  // link[p]: the spring p - p + 1 seen
+  for (const mysim::Spring& s : model.springs) {
+    const int low = std::min(s.i, s.j);
+    if (std::abs(s.i - s.j) != 1 || link[low]) return false;
+    link[low] = 1;
+  }
+  return true;
+}
+
 namespace {
 
 ClosedFormResult circleError(const mysim::Model& model, const mysim::RunRecord& run) {
@@ -42,20 +56,6 @@ struct UniformChain {
 };
 
 // The chain's parameters, if the model is a chain of equal springs and equal free masses.
-// Whether the springs join particle p to p + 1 for every p and nothing else (in any spring
-// order): a chain whatever the scene called it (a "chain", or a particle list laid out as one).
-bool isIndexOrderedPath(const mysim::Model& model) {
-  const int n = model.particleCount();
-  if (static_cast<int>(model.springs.size()) != n - 1) return false;
-  std::vector<char> link(n, 0);  // link[p]: the spring p - p + 1 seen
-  for (const mysim::Spring& s : model.springs) {
-    const int low = std::min(s.i, s.j);
-    if (std::abs(s.i - s.j) != 1 || link[low]) return false;
-    link[low] = 1;
-  }
-  return true;
-}
-
 std::optional<UniformChain> uniformChain(const mysim::Model& model) {
   if (model.isCircle() || model.springs.empty() || !isIndexOrderedPath(model)) return std::nullopt;
   const mysim::Spring& s0 = model.springs.front();

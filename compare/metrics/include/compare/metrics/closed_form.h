@@ -45,6 +45,10 @@ ClosedFormResult closedFormError(const mysim::Model& model, const mysim::RunReco
 // ends (nothing when the model is not one, or the pins are one above the other).
 std::optional<std::vector<mysim::Vec3>> twoPinCatenaryNodes(const mysim::Model& model);
 
+// Whether the springs join particle p to p + 1 for every p and nothing else (in any order): a
+// chain whatever the scene called it (the uniform chain's closed forms, the capstan).
+bool isIndexOrderedPath(const mysim::Model& model);
+
 // Complete elliptic integral of the first kind K(k), by the arithmetic-geometric mean.
 double ellipticK(double k);
 

@@ -33,6 +33,7 @@ std::optional<PairOfRuns> runBeside(const EngineRegistry& registry, const std::s
   if (integrator == "xpbd") {
     s.integrator.values["substeps"] = 4;
     s.integrator.values["iterations"] = 5;
+    s.integrator.values["tolerance"] = 0.0;  // the fixed-count rule pysim follows
   }
   if (dt > 0) s.dt = dt;
   s.duration = duration;

@@ -79,7 +79,8 @@ std::vector<double> settledValues(const TradeAnswer& a) {
 // predicts, within 10 % (measured: 4.38 against 4.42).
 TEST(ErrorBudget, TheTemporalPartShrinksAtTheObservedOrder) {
   const std::vector<double> dts{0.016, 0.008, 0.004, 0.002};
-  const TradeAnswer a = tradeOver(kStrip, {{4}, {"mysim"}, {"xpbd:substeps=4"}, dts}, "budget_time");
+  const TradeAnswer a = tradeOver(kStrip, {{4}, {"mysim"}, {"xpbd:substeps=4:iterations=10:tolerance=0"}, dts},
+                                  "budget_time");
   ASSERT_EQ(a.setups.size(), dts.size());
   std::vector<int> steps;  // per 16 ms: the refinement's "resolution"
   for (double dt : dts) steps.push_back(static_cast<int>(std::lround(0.016 / dt)));
@@ -94,7 +95,10 @@ TEST(ErrorBudget, TheTemporalPartShrinksAtTheObservedOrder) {
 TEST(ErrorBudget, TheSolverPartShrinksAtTheObservedOrder) {
   const std::vector<int> substeps{2, 4, 8, 16, 32};
   std::vector<std::string> variants;
-  for (int k : substeps) variants.push_back("xpbd:substeps=" + std::to_string(k));
+  // The fixed-work form (tolerance 0): its error is the substeps' alone.
+  for (int k : substeps) {
+    variants.push_back("xpbd:substeps=" + std::to_string(k) + ":iterations=10:tolerance=0");
+  }
   const TradeAnswer a = tradeOver(kStrip, {{4}, {"mysim"}, variants, {0.016}}, "budget_solver");
   ASSERT_EQ(a.setups.size(), substeps.size());
   const double predicted = predictedRatio(substeps, settledValues(a));

@@ -32,6 +32,24 @@ void prepareImplicitEulerStep(const ParticleSystem& ps, const State& s, double h
 void implicitEulerResidual(const ParticleSystem& ps, const ImplicitEulerStep& step,
                            const Vector& x, Vector& r);
 
+// The load the step carries: the norm over free particles of gravity and wind at t (drag, a
+// reaction to motion, left out). The iterative solvers' residual is measured against it
+// (pass_control.h): a force left unbalanced is small or large against the weight it holds.
+double stepLoad(const ParticleSystem& ps, double t);
+
+// An iterative solver's residual at x (pass_control.h): |r(x)|, and the forces it is held
+// against, the largest of the step's load, the inertial term |m~/h^2 (x - y~)| and the springs'
+// and hinges' forces: a relative residual |r| / forces is how far the forces acting on the
+// particles are from balancing. (Not |r(y~)|, the residual of the prediction: at large steps
+// the prediction's own stretch, h^2 g on stiff springs, is hundreds of times the weight, and a
+// solver held against it leaves the cloth jittering at rest.)
+struct PassResidual {
+  double residual = 0.0;
+  double forces = 0.0;
+};
+PassResidual implicitEulerPassResidual(const ParticleSystem& ps, const ImplicitEulerStep& step,
+                                       const Vector& x, Vector& r);
+
 // Ends the step at positions x: v = (x - x0) / h, t += h, then the system's after-step (pins on
 // their path with their velocity, contacts).
 void finishImplicitEulerStep(OdeSystem& system, const ImplicitEulerStep& step, const Vector& x,

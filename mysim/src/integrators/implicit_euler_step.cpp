@@ -1,5 +1,8 @@
 #include "mysim/implicit_euler_step.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace mysim {
 
 void prepareImplicitEulerStep(const ParticleSystem& ps, const State& s, double h,
@@ -50,6 +53,31 @@ void implicitEulerResidual(const ParticleSystem& ps, const ImplicitEulerStep& st
   for (int p = 0; p < n; ++p) {
     if (model.pinned[p]) r.segment<3>(3 * p).setZero();
   }
+}
+
+double stepLoad(const ParticleSystem& ps, double t) {
+  const Model& model = ps.model();
+  const int n = ps.particleCount();
+  const Vector zero_velocity = Vector::Zero(3 * n);
+  double sum = 0.0;
+  for (int p = 0; p < n; ++p) {
+    if (!model.pinned[p]) sum += ps.externalForce(p, t, zero_velocity.data()).squaredNorm();
+  }
+  return std::sqrt(sum);
+}
+
+PassResidual implicitEulerPassResidual(const ParticleSystem& ps, const ImplicitEulerStep& step,
+                                       const Vector& x, Vector& r) {
+  implicitEulerResidual(ps, step, x, r);  // inertia + springs + hinges
+  const Model& model = ps.model();
+  double inertia = 0.0, springs = 0.0;
+  for (int p = 0; p < ps.particleCount(); ++p) {
+    if (model.pinned[p]) continue;
+    const Vec3 a = step.mass_over_h2[p] * (x.segment<3>(3 * p) - step.target.segment<3>(3 * p));
+    inertia += a.squaredNorm();
+    springs += (r.segment<3>(3 * p) - a).squaredNorm();
+  }
+  return {r.norm(), std::max({stepLoad(ps, step.t_end), std::sqrt(inertia), std::sqrt(springs)})};
 }
 
 void finishImplicitEulerStep(OdeSystem& system, const ImplicitEulerStep& step, const Vector& x,

@@ -7,6 +7,7 @@
 #include "mysim/integrator.h"
 #include "mysim/particle_system.h"
 #include "mysim/sparse_ldlt3.h"
+#include "integrators/pass_control.h"
 #include "mysim/spring_forces.h"
 #include "run/parallel_threshold.h"
 
@@ -36,7 +37,7 @@ namespace {
 // step, as every integrator (afterStep).
 class LocalGlobal final : public Integrator {
  public:
-  explicit LocalGlobal(int iterations) : iterations_(iterations) {}
+  explicit LocalGlobal(PassControl control) : control_(control) {}
 
   StepCounts step(OdeSystem& system, State& s, double h) override {
     ParticleSystem& ps = *system.particles();
@@ -51,12 +52,19 @@ class LocalGlobal final : public Integrator {
     }
     prepareImplicitEulerStep(ps, s, h, step_);
     x_ = step_.target;
-    for (int it = 0; it < iterations_; ++it) {
+    int passes = 0;
+    PassResidual measured;
+    do {
       localStep(ps.model());
       globalStep(ps);
-    }
-    counts.derivative_evaluations = iterations_;
-    counts.linear_iterations = iterations_;
+      ++passes;
+      if (control_.checksAfter(passes)) {
+        measured = implicitEulerPassResidual(ps, step_, x_, residual_);
+      }
+    } while (!control_.stopAfter(passes, measured.residual, measured.forces));
+    if (!control_.reachedTolerance(measured.residual, measured.forces)) counts.solver_failures = 1;
+    counts.derivative_evaluations = passes;
+    counts.linear_iterations = passes;
     finishImplicitEulerStep(system, step_, x_, s);
     return counts;
   }
@@ -176,7 +184,7 @@ class LocalGlobal final : public Integrator {
     }
   }
 
-  int iterations_;
+  PassControl control_;
   double factored_h_ = 0.0;
   bool factored_ = false;
   SparseLdlt3 factor_;
@@ -186,13 +194,14 @@ class LocalGlobal final : public Integrator {
   Vector scale_;                     // (S) k (1 - rest / l) at the current iterate
   Vector rhs_;                       // (3F) the global step's right-hand side, then its solution
   Vector x_;                         // (3N) the iterate
+  Vector residual_;                  // (3N) r(x) of implicit_euler_step.h, when measured
   ImplicitEulerStep step_;
 };
 
 }  // namespace
 
 std::unique_ptr<Integrator> makeLocalGlobal(const IntegratorSettings& s) {
-  return std::make_unique<LocalGlobal>(static_cast<int>(s.value("iterations")));
+  return std::make_unique<LocalGlobal>(PassControl::from(s));
 }
 
 }  // namespace mysim

@@ -1,9 +1,12 @@
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "mysim/graph_coloring.h"
+#include "mysim/implicit_euler_step.h"
 #include "mysim/integrator.h"
 #include "mysim/particle_system.h"
+#include "integrators/pass_control.h"
 
 namespace mysim {
 namespace {
@@ -27,7 +30,7 @@ namespace {
 // any thread count.
 class Xpbd final : public Integrator {
  public:
-  Xpbd(int substeps, int iterations) : substeps_(substeps), iterations_(iterations) {}
+  Xpbd(int substeps, PassControl control) : substeps_(substeps), control_(control) {}
 
   StepCounts step(OdeSystem& system, State& s, double h) override {
     ParticleSystem& ps = *system.particles();
@@ -36,21 +39,17 @@ class Xpbd final : public Integrator {
     if (inverse_mass_.size() != n) prepare(model);
     const double hs = h / substeps_;
     if (hs != prepared_hs_) prepareSubstep(model, hs);
+    StepCounts counts{.accepted = 1, .derivative_evaluations = substeps_};
     for (int sub = 0; sub < substeps_; ++sub) {
       predict(ps, s, hs);
       lambda_.setZero();
       hinge_lambda_.setZero();
-      for (int it = 0; it < iterations_; ++it) {
-        projectSprings(s);
-        projectHinges(model, s);
-      }
+      counts.linear_iterations += solveSubstep(ps, s, counts);
       s.y.tail(3 * n) = (s.y.head(3 * n) - x_prev_) / hs;
       // Pins on their path with its velocity, then the contacts: after every substep.
       system.afterStep(s);
     }
-    return {.accepted = 1,
-            .derivative_evaluations = substeps_,
-            .linear_iterations = static_cast<long>(substeps_) * iterations_};
+    return counts;
   }
 
  private:
@@ -58,6 +57,8 @@ class Xpbd final : public Integrator {
     colors_ = colorSprings(model.particleCount(), model.springs);
     lambda_ = Vector::Zero(static_cast<Eigen::Index>(model.springs.size()));
     hinge_lambda_ = Vector::Zero(3 * static_cast<Eigen::Index>(model.hinges.size()));
+    residual_squares_ = Vector::Zero(lambda_.size());
+    hinge_residual_squares_ = Vector::Zero(static_cast<Eigen::Index>(model.hinges.size()));
     inverse_mass_.resize(model.particleCount());
     for (int p = 0; p < model.particleCount(); ++p) {
       inverse_mass_[p] = model.pinned[p] ? 0.0 : 1.0 / model.mass[p];
@@ -82,6 +83,30 @@ class Xpbd final : public Integrator {
       hinge_alpha_[k] = 1.0 / (model.hinges[k].stiffness * hs * hs);
     }
     prepared_hs_ = hs;
+    hs2_ = hs * hs;
+  }
+
+  // Passes over the constraints until pass_control.h stops them; the passes made. A pass's
+  // residual is the norm of every constraint's force left unbalanced as the pass meets it,
+  // k (C + alpha~ lambda + damping term), held against the forces acting: the largest of the
+  // substep's load (gravity, wind) and the constraints' forces lambda / h_s^2.
+  int solveSubstep(const ParticleSystem& ps, State& s, StepCounts& counts) {
+    const bool measure = control_.adaptive();
+    const double load = measure ? stepLoad(ps, s.t) : 0.0;
+    int passes = 0;
+    double residual = 0.0, forces = 0.0;
+    do {
+      projectSprings(s, measure);
+      projectHinges(ps.model(), s, measure);
+      ++passes;
+      if (measure) {
+        residual = std::sqrt(residual_squares_.sum() + hinge_residual_squares_.sum());
+        const double carried = std::sqrt(lambda_.squaredNorm() + hinge_lambda_.squaredNorm()) / hs2_;
+        forces = std::max(load, carried);
+      }
+    } while (!control_.stopAfter(passes, residual, forces));
+    if (!control_.reachedTolerance(residual, forces)) counts.solver_failures = 1;
+    return passes;
   }
 
   // Unconstrained motion under the other forces, the pins on their path at the substep's end.
@@ -103,7 +128,7 @@ class Xpbd final : public Integrator {
   }
 
   // One Gauss-Seidel pass, colour by colour (a colour in parallel: its springs share no end).
-  void projectSprings(State& s) {
+  void projectSprings(State& s, bool measure) {
     double* x = s.y.data();
     const double* xp = x_prev_.data();
     int begin = 0;
@@ -119,14 +144,20 @@ class Xpbd final : public Integrator {
         Eigen::Map<Vec3> xi(x + 3 * sp.i), xj(x + 3 * sp.j);
         const Vec3 d = xi - xj;
         const double length = d.norm();
-        if (length == 0.0) continue;  // no direction to push along
+        if (length == 0.0) {  // no direction to push along
+          if (measure) residual_squares_[begin - count + c] = 0.0;
+          continue;
+        }
         const Vec3 unit = d / length;
         const Vec3 moved = (xi - Eigen::Map<const Vec3>(xp + 3 * sp.i)) -
                            (xj - Eigen::Map<const Vec3>(xp + 3 * sp.j));
         double& lambda = lambda_[begin - count + c];
-        const double dlambda =
-            (-(length - sp.rest_length) - sp.alpha * lambda - sp.gamma * unit.dot(moved)) /
-            ((1.0 + sp.gamma) * (wi + wj) + sp.alpha);
+        const double unsolved =
+            -(length - sp.rest_length) - sp.alpha * lambda - sp.gamma * unit.dot(moved);
+        // Each spring's own slot, summed after the pass in one order: the same bits at any
+        // thread count.
+        if (measure) residual_squares_[begin - count + c] = square(unsolved / (sp.alpha * hs2_));
+        const double dlambda = unsolved / ((1.0 + sp.gamma) * (wi + wj) + sp.alpha);
         xi += wi * dlambda * unit;
         xj -= wj * dlambda * unit;
         lambda += dlambda;
@@ -139,7 +170,7 @@ class Xpbd final : public Integrator {
   //   dlambda = (-C - alpha~ lambda) / (sum_a w_a^2 / m_a + alpha~),  x_a += w_a dlambda / m_a.
   // One after another in list order after the springs (a hinge's four particles are shared with
   // its neighbours' hinges, and there are few enough that this pass is not the step's cost).
-  void projectHinges(const Model& model, State& s) {
+  void projectHinges(const Model& model, State& s, bool measure) {
     double* x = s.y.data();
     for (int k = 0; k < static_cast<int>(model.hinges.size()); ++k) {
       const Hinge& hinge = model.hinges[k];
@@ -149,7 +180,9 @@ class Xpbd final : public Integrator {
       }
       if (denominator == hinge_alpha_[k]) continue;  // all four pinned
       Eigen::Map<Vec3> lambda(hinge_lambda_.data() + 3 * k);
-      const Vec3 dlambda = (-hingeVector(hinge, x) - hinge_alpha_[k] * lambda) / denominator;
+      const Vec3 unsolved = -hingeVector(hinge, x) - hinge_alpha_[k] * lambda;
+      if (measure) hinge_residual_squares_[k] = (unsolved / (hinge_alpha_[k] * hs2_)).squaredNorm();
+      const Vec3 dlambda = unsolved / denominator;
       for (int a = 0; a < 4; ++a) {
         const int p = hinge.particle[a];
         Eigen::Map<Vec3>(x + 3 * p) += (hinge.weight[a] * inverse_mass_[p]) * dlambda;
@@ -165,13 +198,17 @@ class Xpbd final : public Integrator {
     double rest_length, wi, wj;  // wi, wj: the ends' inverse masses (0 pinned)
     double alpha, gamma;         // alpha~ = 1 / (k h_s^2), gamma = c / (k h_s)
   };
-  int substeps_, iterations_;
+  int substeps_;
+  PassControl control_;
   double prepared_hs_ = 0.0;
+  double hs2_ = 0.0;  // prepared_hs_^2: k (C + alpha~ lambda) = (C + alpha~ lambda) / (alpha~ h_s^2)
+  static double square(double v) { return v * v; }
   std::vector<PackedSpring> packed_;  // (S) the springs in colour order, for substeps of prepared_hs_
   std::vector<std::vector<int>> colors_;
   Vector lambda_;        // (S) accumulated multiplier of each spring (colour order), this substep
   Vector hinge_lambda_;  // (3H) accumulated multiplier of each hinge, this substep
   Vector hinge_alpha_;   // (H) 1 / (k h_s^2)
+  Vector residual_squares_, hinge_residual_squares_;  // (S), (H) this pass's, when measured
   Vector inverse_mass_;  // (N) 0 for pinned particles
   Vector x_prev_;        // (3N) positions at the substep's start
 };
@@ -179,8 +216,7 @@ class Xpbd final : public Integrator {
 }  // namespace
 
 std::unique_ptr<Integrator> makeXpbd(const IntegratorSettings& s) {
-  return std::make_unique<Xpbd>(static_cast<int>(s.value("substeps")),
-                                static_cast<int>(s.value("iterations")));
+  return std::make_unique<Xpbd>(static_cast<int>(s.value("substeps")), PassControl::from(s));
 }
 
 }  // namespace mysim

@@ -166,12 +166,13 @@ void readIntegrator(FieldReader& top, Scene& scene) {
     if (!preconditioner) throw FieldError{"integrator.cg_preconditioner", preconditioner.error()};
     is.preconditioner = *preconditioner;
   }
-  // Every integrator's own numeric parameters (the catalogue declares them), defaults filled in.
+  // Every integrator's own numeric parameters (the catalogue declares them) that the scene
+  // gives; the rest take the default of the integrator that runs (IntegratorSettings::value:
+  // families differ, e.g. XPBD's one pass a substep against local/global's ten).
   for (const IntegratorInfo& info : integratorCatalog()) {
     for (const IntegratorParameter& p : info.parameters) {
-      if (!p.in_values || is.values.count(p.name)) continue;
-      is.values[p.name] = !integ.has(p.name) ? std::stod(p.fallback)
-                          : p.integer
+      if (!p.in_values || is.values.count(p.name) || !integ.has(p.name)) continue;
+      is.values[p.name] = p.integer
                               ? static_cast<double>(integ.integer(p.name, static_cast<long>(p.low),
                                                                   static_cast<long>(p.high)))
                               : integ.inRange(p.name, p.low, p.high);

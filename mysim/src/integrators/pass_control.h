@@ -1,0 +1,43 @@
+#pragma once
+// When an iterative step solver (XPBD, local/global, vertex block descent) stops passing over
+// the system. A fixed number of passes is no guarantee: on stiff springs at large steps
+// (h^2 k / m in the hundreds) ten passes leave most of the step unsolved, and an unsolved
+// implicit step can gain energy and blow up (measured: docs/performance.md "Passes to a
+// tolerance"). So after the `iterations` passes that always run, the solver goes on until its
+// residual is at most `tolerance` times the residual of the step's unsolved start (the inertial
+// prediction: the force imbalance the step has to remove), or `max_iterations` passes; a step
+// that stops at the cap counts a solver failure (the run reports it, as backward Euler's CG).
+// tolerance 0 runs exactly `iterations` passes (the fixed-count form, for comparison).
+#include <algorithm>
+
+#include "mysim/integrator.h"
+
+namespace mysim {
+
+struct PassControl {
+  int iterations = 10;
+  int max_iterations = 10;
+  double tolerance = 0.0;
+
+  static PassControl from(const IntegratorSettings& s) {
+    PassControl c;
+    c.iterations = static_cast<int>(s.value("iterations"));
+    c.tolerance = s.value("tolerance");
+    c.max_iterations = std::max(c.iterations, static_cast<int>(s.value("max_iterations")));
+    return c;
+  }
+  bool adaptive() const { return tolerance > 0.0; }
+  // Whether the residual needs measuring after pass `done` (1-based).
+  bool checksAfter(int done) const { return adaptive() && done >= iterations; }
+  // After pass `done`: whether to stop, given the residual (when checksAfter) and its reference.
+  bool stopAfter(int done, double residual, double reference) const {
+    if (done < iterations) return false;
+    if (!adaptive()) return true;
+    return residual <= tolerance * reference || done >= max_iterations;
+  }
+  bool reachedTolerance(double residual, double reference) const {
+    return !adaptive() || residual <= tolerance * reference;
+  }
+};
+
+}  // namespace mysim

@@ -149,7 +149,7 @@ void addStabilityCommand(CLI::App& app, int& exit_code) {
                   "Scene: every engine's stability map on it, as written, across "
                   "--stiffness-scales and --mass-ratios, with the w_max theory line (default: the "
                   "built-in oscillator)");
-  cmd->add_option("--engines", o->engines, "Scene maps: engines (all-fixed-step: every one)")
+  cmd->add_option("--engines", o->engines, "Scene maps: engines (all-fixed-step: every one; all-direct: all but mysim's iterative families)")
       ->delimiter(',')
       ->capture_default_str();
   addEnginesFileOption(cmd, o->engines_files);

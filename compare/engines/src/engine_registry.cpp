@@ -83,6 +83,13 @@ std::vector<std::string> EngineRegistry::expand(const std::vector<std::string>& 
   for (const std::string& spec : given) {
     if (spec == "all" || spec == "all-fixed-step") {
       for (std::string& s : specs(spec != "all")) out.push_back(std::move(s));
+    } else if (spec == "all-direct") {
+      // The fixed-step engines but mysim's iterative families (passes to a tolerance), which a
+      // study may map on their own (the main job's large-steps map).
+      for (std::string& s : specs(true)) {
+        const mysim::IntegratorInfo* info = mysim::findIntegrator(schemeOf(s, ""));
+        if (info == nullptr || !mysim::iterativeFamily(info->family)) out.push_back(std::move(s));
+      }
     } else {
       out.push_back(spec);
     }

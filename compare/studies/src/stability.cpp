@@ -173,6 +173,7 @@ StabilityLimit sceneStability(const EngineRegistry& registry, const mysim::Model
         settings.duration > 0 ? std::max(1L, std::lround(settings.duration / h)) : settings.steps;
     run.run.duration = h * static_cast<double>(steps);
     run.run.sample_interval = h * static_cast<double>(std::max(1L, steps / 100));
+    run.run.stop_at_solver_failure = true;
     auto record = registry.run(engine, model, run);
     if (!record) {
       why = record.error().message;

@@ -88,6 +88,11 @@ enum class IntegratorFamily {
   BlockDescent,   // implicit Euler by per-vertex Newton steps (vertex block descent)
 };
 const char* familyName(IntegratorFamily family);
+// The families whose step is passes to a tolerance (pass_control.h): XPBD, local/global, VBD.
+inline bool iterativeFamily(IntegratorFamily f) {
+  return f == IntegratorFamily::PositionBased || f == IntegratorFamily::LocalGlobal ||
+         f == IntegratorFamily::BlockDescent;
+}
 
 // One row per integrator: everything any study, table, benchmark or test asks of a method, so
 // adding one takes its own file (a make... factory) and a row here, nothing else.

@@ -50,6 +50,11 @@ struct RunSettings {
   // the cores other processes leave free (mysim/thread_budget.h); results are the same either way.
   int threads = 0;
   bool follow_load = true;
+  // The stability study's: a step whose solver stopped short of its tolerance (an iterative
+  // family at its pass cap, CG at its iteration limit) ends the run as "solver-not-converged",
+  // so a map's limit for an iterative family is the largest step it still solves, not one it
+  // survives unsolved (issue 36). Off in every other run: there it is reported, not fatal.
+  bool stop_at_solver_failure = false;
 };
 
 // Frames are taken every this many steps.

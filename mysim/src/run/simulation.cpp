@@ -97,6 +97,12 @@ RunRecord simulate(OdeSystem& system, Stepper& stepper, State state, const RunSe
                              "minimum step or within its maximum steps; the run stops here"};
       break;
     }
+    if (settings.stop_at_solver_failure && record.counts.solver_failures > 0) {
+      record.blowup = BlowUp{state.t, step, "solver-not-converged",
+                             "the step's solver stopped short of its tolerance (its iteration "
+                             "cap); the stability search counts the step as failed"};
+      break;
+    }
     // One health check a step: the first bad state is reported, never written.
     if (auto bad = system.checkHealth(state)) {
       record.blowup = BlowUp{state.t, step, bad->check, bad->detail};

@@ -92,7 +92,8 @@ class EngineRegistry {
   // Every engine as a spec: each registered engine, and each that takes an integrator once per
   // integrator of the catalogue ("mysim:rk4", ...), without adaptive ones when fixed_step_only.
   std::vector<std::string> specs(bool fixed_step_only = false) const;
-  // `specs` with "all" replaced by specs() (and "all-fixed-step" by specs(true)).
+  // `specs` with "all" replaced by specs() ("all-fixed-step" by specs(true), "all-direct" by
+  // specs(true) without mysim's iterative families).
   std::vector<std::string> expand(const std::vector<std::string>& specs) const;
   // The integrator whose theory applies to a spec run on a scene stepped by `scene_integrator`:
   // "mysim" -> it, "mysim:rk4" -> "rk4", a Bullet engine -> its scheme; empty if none.

@@ -23,7 +23,8 @@ const std::string kStrip = std::string(SPRINGCHECK_SOURCE_DIR) + "/scenes/materi
 // the wrong run breaks the sum).
 TEST(ErrorBudget, ThePartsAddUpToThePhysicalError) {
   const TradeAnswer a = tradeOver(kStrip, {{2, 4, 8}, {"mysim"},
-                                           {"xpbd", "xpbd:substeps=4"},
+                                           {"xpbd:substeps=1:iterations=10:tolerance=0",
+                                            "xpbd:substeps=4:iterations=10:tolerance=0"},
                                            {0.008, 0.004}}, "budget_sum");
   int checked = 0;
   for (const TradeSetup& s : a.setups) {

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "mysim/thread_budget.h"
 
@@ -61,6 +62,23 @@ std::optional<BlowUp> energyRise(double total, double lowest, double limit, doub
                     "energy scale): a passive scene cannot gain energy"};
 }
 
+// A solver that could not do its step: an adaptive method gave up (always fatal), or, where the
+// run asks (the stability search), an iterative solver stopped at its cap.
+std::optional<BlowUp> solverStop(const StepCounts& counts, const RunSettings& settings, double t,
+                                 long step) {
+  if (counts.gave_up) {
+    return BlowUp{t, step, "step-limit",
+                  "the adaptive integrator could not meet its tolerance above its minimum step "
+                  "or within its maximum steps; the run stops here"};
+  }
+  if (settings.stop_at_solver_failure && counts.solver_failures > 0) {
+    return BlowUp{t, step, "solver-not-converged",
+                  "the step's solver stopped short of its tolerance (its iteration cap); the "
+                  "stability search counts the step as failed"};
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 RunRecord simulate(OdeSystem& system, Stepper& stepper, State state, const RunSettings& settings) {
@@ -91,16 +109,8 @@ RunRecord simulate(OdeSystem& system, Stepper& stepper, State state, const RunSe
     stepping += Clock::now() - start;
     record.steps = step;
     if (driven) external_work += system.externalWork(before, state);
-    if (record.counts.gave_up) {
-      record.blowup = BlowUp{state.t, step, "step-limit",
-                             "the adaptive integrator could not meet its tolerance above its "
-                             "minimum step or within its maximum steps; the run stops here"};
-      break;
-    }
-    if (settings.stop_at_solver_failure && record.counts.solver_failures > 0) {
-      record.blowup = BlowUp{state.t, step, "solver-not-converged",
-                             "the step's solver stopped short of its tolerance (its iteration "
-                             "cap); the stability search counts the step as failed"};
+    if (auto stop = solverStop(record.counts, settings, state.t, step)) {
+      record.blowup = stop;
       break;
     }
     // One health check a step: the first bad state is reported, never written.

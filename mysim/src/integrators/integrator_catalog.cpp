@@ -56,8 +56,9 @@ const std::vector<IntegratorParameter> kBackwardEulerParameters = {
 // XPBD and local/global at 1 % run both through and settle within 0.7 mm of backward Euler on
 // the cloth (local/global's 1000-pass cap holds it 3 mm off on the strip: its constant matrix
 // turns a stiff membrane slowly); 0.1 % costs them 2 to 4 times the passes for no closer shape.
-// VBD at 1 % keeps the settled cloth jittering (kinetic energy 8e-7 J at 12 s, 3.8 mm off):
-// its default is 0.1 %, with Chebyshev acceleration (below), 0.69 mm.
+// VBD at 1 % leaves the cloth moving at 12 s (kinetic energy 1.4e-6 J plain, 6.7e-7 J with
+// Chebyshev, against backward Euler's 2e-12 J; 0.8 to 0.9 mm off): its default is 0.1 %, with
+// Chebyshev acceleration (below): 0.68 mm, 3e-8 J, in 44 passes a step (126 without).
 IntegratorParameter passTolerance(const char* fallback) {
   return {"tolerance", fallback,
           "after `iterations` passes, go on until the forces left unbalanced are this fraction of "
@@ -101,6 +102,14 @@ const std::vector<IntegratorParameter> kAdaptiveParameters = {
 
 }  // namespace
 
+// The iterative families (XPBD, local/global, VBD) solve the implicit-Euler step (XPBD: each
+// substep), unconditionally stable once solved; solved to a tolerance, their limit is the step
+// whose passes no longer reach it within the cap (Gauss-Seidel needs passes growing as (h w)^2),
+// which the stability maps measure, counting a capped step as failed (docs/performance.md
+// "Passes to a tolerance"). Known: on a stiff membrane bending far (the shipped cantilever at 32
+// cells, 1/60 s, h^2 k / m ~ 1e5) VBD cannot reach 0.1 % in 1000 passes and blows up;
+// local/global stops at its cap there and on every hinge strip at 1/60 s (its constant matrix
+// turns a stiff membrane slowly) and says so (solver-not-converged).
 const std::vector<IntegratorInfo>& integratorCatalog() {
   using S = const IntegratorSettings&;
   using F = IntegratorFamily;
@@ -156,13 +165,11 @@ const std::vector<IntegratorInfo>& integratorCatalog() {
       {"dopri5", "", "Dormand-Prince 5(4), abs/rel tolerance", false,
        [](S s) { return makeDormandPrince(s.abs_tolerance, s.rel_tolerance); }, 5, F::Adaptive,
        [](double) { return Limit(); }, kAdaptiveParameters},
-      // Each substep is implicit Euler when its constraints are solved exactly; with a finite
-      // number of passes theory gives no limit (the stability maps measure it).
+      // Iterative: no theory line (above the catalogue).
       {"xpbd", "", "extended position-based dynamics: springs as compliant distance constraints",
        true, [](S s) { return makeXpbd(s); }, 1, F::PositionBased, [](double) { return Limit(); },
        kXpbdParameters},
-      // Both solve the implicit-Euler step, unconditionally stable once converged; with a fixed
-      // number of passes theory gives no limit (the stability maps measure it).
+      // Iterative: no theory line (above the catalogue).
       {"local-global", "",
        "Liu et al. 2013 fast mass-spring: implicit Euler by local/global passes, one factorisation",
        true, [](S s) { return makeLocalGlobal(s); }, 1, F::LocalGlobal,

@@ -91,6 +91,26 @@ TEST(LargeStepCloth, TenFixedPassesGainEnergyAndBlowUpWhereTheToleranceHolds) {
   }
 }
 
+// Chebyshev acceleration (Wang 2015, as VBD's paper uses it) reaches the plain solver's answer in
+// fewer passes: the check cloth's first 0.5 s (its fall, where the passes are most) solved to the
+// default 0.1 %, with rho 0.95 and without. Measured: 185 against 595 passes a step, final nodes
+// 4.5e-6 m apart; bounds: at most half the passes, and 1e-4 m (both within 0.1 % of balanced
+// forces, far below the 1 mm the families are held to).
+TEST(LargeStepCloth, ChebyshevReachesThePlainSolutionInFewerPasses) {
+  auto run = [](const std::string& rho) {
+    Scene scene = hangingCloth("vbd", R"(, "acceleration_rho": )" + rho);
+    scene.duration = 0.5;
+    return testing::simulateScene(scene);
+  };
+  const RunRecord plain = run("0"), accelerated = run("0.95");
+  ASSERT_FALSE(plain.blowup || accelerated.blowup);
+  EXPECT_EQ(plain.counts.solver_failures + accelerated.counts.solver_failures, 0);
+  EXPECT_LT(accelerated.counts.linear_iterations, plain.counts.linear_iterations / 2)
+      << accelerated.counts.linear_iterations << " against " << plain.counts.linear_iterations;
+  const ParticleRows difference = accelerated.frames.back() - plain.frames.back();
+  EXPECT_LT(difference.leftCols<3>().rowwise().norm().maxCoeff(), 1e-4);
+}
+
 // A hinge cantilever other than the shipped one (0.2 m x 0.04 m, 150 g/m^2, rigidity 1.5e-4 N m:
 // w L^3 / B = 7.8, a large deflection) at 8 cells, 4 s.
 Scene otherCantilever(const std::string& integrator, double dt) {

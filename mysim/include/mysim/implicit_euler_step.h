@@ -41,8 +41,8 @@ double stepLoad(const ParticleSystem& ps, double t);
 // against, the largest of the step's load, the inertial term |m~/h^2 (x - y~)| and the springs'
 // and hinges' forces: a relative residual |r| / forces is how far the forces acting on the
 // particles are from balancing. (Not |r(y~)|, the residual of the prediction: at large steps
-// the prediction's own stretch, h^2 g on stiff springs, is hundreds of times the weight, and a
-// solver held against it leaves the cloth jittering at rest.)
+// the prediction's own stretch, h^2 g on stiff springs, is hundreds of times the weight, so a
+// bound against it loosens with the step, not with anything physical.)
 struct PassResidual {
   double residual = 0.0;
   double forces = 0.0;

@@ -22,6 +22,7 @@ struct ImplicitEulerStep {
   Vector x0;              // (3N) positions at the step's start
   Vector target;          // (3N) y~ for free particles, the pin's position at t + h for pinned
   Vector mass_over_h2;    // (N) m~ / h^2
+  double load = 0.0;      // stepLoad at t + h, summed while the target is made
 };
 
 // The step from state s by h, for system ps.

@@ -41,9 +41,21 @@ class Context:
         return f"p. {number}" if number else "no page"
 
 
+def draw_title(fig, title):
+    """The page's answer: one line of 14-point bold holds about 100 characters of the A4 width; a
+    longer one goes on two lines of smaller type (never cut at the edges, clear of the command)."""
+    if len(title) <= 100:
+        fig.text(0.5, 0.955, title, ha="center", va="center", fontsize=14, weight="bold")
+        return
+    lines = textwrap.wrap(title, max(len(title) // 2 + 10, 60))
+    size = min(12, 12 * 118 / max(len(line) for line in lines))
+    fig.text(0.5, 0.963, "\n".join(lines), ha="center", va="center", fontsize=size, weight="bold",
+             linespacing=1.1)
+
+
 def frame(fig, page, number, total, stamp, notes):
     """Title (the question the page answers), caption (how to read it), page number and stamp."""
-    fig.text(0.5, 0.955, page.title, ha="center", va="center", fontsize=14, weight="bold")
+    draw_title(fig, page.title)
     caption = " ".join([page.caption] + list(notes or []))
     lines = textwrap.wrap(caption, 165)
     # A long caption (many notes) in smaller type, above the stamp: 200 characters of 7-point type

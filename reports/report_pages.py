@@ -1,7 +1,8 @@
 """The report's pages, in order: what the manifest holds decides which exist."""
 import closed_form_page
 import contact_page
-import dashboard
+import front_page
+import gate_pages
 import glossary_page
 import family_page
 import drape_pages
@@ -20,7 +21,7 @@ import verdict_page
 
 def pages(ctx):
     m = ctx.manifest
-    result = dashboard.pages(ctx)
+    result = [front_page.page(ctx)] + gate_pages.pages(ctx)
     if m.get("headlines", {}).get("verdicts"):
         result.insert(1, verdict_page.page(ctx))
     if any(c["group"] == "suite" for c in m["comparisons"]):

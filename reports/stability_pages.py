@@ -110,75 +110,163 @@ def extremes_page(path):
                 "trapezoidal).", draw)
 
 
+def engine_label(engine, iterations, width=26):
+    """The engine's row name, wrapped at its ':' parameters so a long setup
+    (mysim:xpbd:substeps=1:iterations=10:tolerance=0) stays beside its row, not over the next panel."""
+    label = engine + (f" ({iterations} passes)" if iterations else "")
+    parts = label.split(":")
+    if len(label) <= width or len(parts) <= 2:
+        return label
+    lines, line = [], ":".join(parts[:2])
+    for part in parts[2:]:
+        if len(line) + 1 + len(part) > width:
+            lines.append(line + ":")
+            line = part
+        else:
+            line += ":" + part
+    return "\n".join(lines + [line])
+
+
+def engine_summary(rows):
+    """engine label -> ('theory', min, max ratio) | ('limit', min, max h w_max) | ('stable',) |
+    ('refused',) | ('never',): what its cells say over every stiffness scale and mass ratio."""
+    summary = {}
+    for key in sorted({(r["engine"], r["classic_iterations"]) for r in rows}):
+        mine = [r for r in rows if (r["engine"], r["classic_iterations"]) == key]
+        ratios = [number(r["ratio"]) for r in mine if r["status"] == "bracketed" and number(r["ratio"])]
+        hw = [number(r["h_w_max"]) for r in mine if r["status"] == "bracketed" and number(r["h_w_max"])]
+        label = engine_label(*key).replace("\n", "")
+        if ratios:
+            summary[label] = ("theory", min(ratios), max(ratios))
+        elif hw:
+            summary[label] = ("limit", min(hw), max(hw))
+        elif any(r["status"] == "stable-at-max" for r in mine):
+            summary[label] = ("stable",)
+        else:
+            refused = any(r["status"] == "refused" for r in mine)
+            summary[label] = ("refused",) if refused else ("never",)
+    return summary
+
+
+def plain(x):
+    """A number as a reader says it: 0.026, 18, 1130 (no exponent)."""
+    return f"{x:.2g}" if x < 100 else f"{x:.0f}"
+
+
+def names(labels, most=2):
+    """A few names in full, else their count."""
+    return ", ".join(labels) if len(labels) <= most else f"{len(labels)} engines"
+
+
+def scene_title(scene, rows):
+    """The answer from the table: how close the schemes with a theory come to it (worst and best
+    cell), which engines have a limit without one, which were stable at every step tried."""
+    summary = engine_summary(rows)
+    theory = [s for s in summary.values() if s[0] == "theory"]
+    limited = [label for label, s in summary.items() if s[0] == "limit"]
+    stable = [label for label, s in summary.items() if s[0] == "stable"]
+    parts = []
+    if theory:
+        parts.append(f"{len(theory)} schemes at x{min(s[1] for s in theory):.2f} to "
+                     f"x{max(s[2] for s in theory):.2f} of their theory")
+    if limited:
+        low, high = min(summary[n][1] for n in limited), max(summary[n][2] for n in limited)
+        parts.append(f"{names(limited, 1)} limited at h w_max {plain(low)} to {plain(high)} (no theory)")
+    if stable:
+        parts.append(f"{names(stable)} stable at every step tried")
+    return f"{scene}: " + ("; ".join(parts) if parts else "no engine has a stable step")
+
+
+def draw_map_series(map_ax, base, label, kw):
+    """One engine on the map at the lowest mass ratio: a line through the limits found, hollow
+    markers where it was still stable at the largest step tried (its limit lies above: never drawn
+    as if it were one), its theory thin and dashed."""
+    found = [(k, number(r["h_stable"])) for k, r in base if r["status"] == "bracketed" and number(r["h_stable"])]
+    capped = [(k, number(r["h_stable"])) for k, r in base if r["status"] == "stable-at-max" and number(r["h_stable"])]
+    if found:
+        map_ax.loglog(*zip(*found), label=label, **kw)
+    if capped:
+        map_ax.loglog(*zip(*capped), linestyle="none", marker=kw["marker"], markerfacecolor="none",
+                      markeredgecolor=kw["color"], markersize=7, label=None if found else label + " (stable)")
+    theory = [(k, number(r["theory_h"])) for k, r in base if number(r["theory_h"])]
+    if theory:
+        map_ax.loglog(*zip(*theory), color=kw["color"], lw=0.8, linestyle=(0, (4, 3)))
+
+
+def draw_limit_row(limit_ax, mine, ratios, row_index, kw):
+    """One engine's row of h w_max: a filled dot per limit found, a hollow one per cell still
+    stable at the largest step tried (drawn there), the mass ratios stacked top to bottom."""
+    for j, ratio in enumerate(ratios):
+        at_ratio = [r for r in mine if number(r["mass_ratio"]) == ratio]
+        y = row_index + (j - (len(ratios) - 1) / 2) * 0.22
+        hw = [number(r["h_w_max"]) for r in at_ratio if r["status"] == "bracketed" and number(r["h_w_max"])]
+        limit_ax.scatter(hw, [y] * len(hw), color=kw["color"], marker=kw["marker"], s=22, alpha=0.85,
+                         edgecolors="none")
+        capped = [number(r["h_stable"]) * number(r["w_max"]) for r in at_ratio
+                  if r["status"] == "stable-at-max" and number(r["h_stable"]) and number(r["w_max"])]
+        limit_ax.scatter(capped, [y] * len(capped), facecolors="none", edgecolors=kw["color"],
+                         marker=kw["marker"], s=26, linewidths=1.2)
+    if not any(r["status"] == "bracketed" and number(r["h_w_max"]) for r in mine):
+        found = [r for r in mine if r["status"] in FOUND]
+        text = ("stable at every step tried" if found else
+                "refuses this model" if any(r["status"] == "refused" for r in mine) else "never stable")
+        limit_ax.annotate(text, (0.02, row_index), xycoords=("axes fraction", "data"), va="center",
+                          fontsize=7.5, color=kw["color"])
+    measured = [number(r["ratio"]) for r in mine if number(r["ratio"]) and r["status"] == "bracketed"]
+    c = [number(r["theory_h"]) * number(r["w_max"]) for r in mine if number(r["theory_h"])]
+    if c:
+        limit_ax.plot([c[0], c[0]], [row_index - 0.42, row_index + 0.42], color="black", lw=1.6)
+    if measured:
+        limit_ax.annotate(f"x{min(measured):.2f}..{max(measured):.2f}", (1.0, row_index),
+                          xycoords=("axes fraction", "data"), xytext=(4, 0),
+                          textcoords="offset points", va="center", fontsize=7)
+
+
+def label_axes(map_ax, limit_ax, labels, ratio):
+    limit_ax.set_xscale("log")
+    limit_ax.set_yticks(range(len(labels)), labels, fontsize=7.5 if len(labels) < 14 else 6.5)
+    limit_ax.invert_yaxis()
+    limit_ax.set_xlabel("largest stable step times the highest natural frequency, h w_max [1]")
+    limit_ax.set_title("the limit at every cell, scale-free; black bar: theory c; right: measured / theory",
+                       fontsize=9)
+    limit_ax.grid(True, axis="x", which="both", alpha=0.3)
+    map_ax.set_xlabel("spring stiffness, times the scene's own (1 = as written) [1]")
+    map_ax.set_ylabel("largest stable step [s]")
+    map_ax.set_title(f"the map at neighbour mass ratio {ratio:g} only (thin dashed: theory c / w_max)", fontsize=9)
+    map_ax.grid(True, which="both", alpha=0.3)
+    map_ax.legend(fontsize=6.5, loc="lower left")
+
+
 def scene_page(entry):
     scene = entry["scene"]
+    rows = read_csv(entry["path"])
 
     def draw(fig, ctx):
-        rows = read_csv(entry["path"])
-        grid = plot_area(fig, 1, 2, right=0.92, wspace=0.32, width_ratios=(1, 1.15))
-        map_ax, limit_ax = fig.add_subplot(grid[0, 0]), fig.add_subplot(grid[0, 1])
         ratios = sorted({number(r["mass_ratio"]) for r in rows})
         engines = sorted({(r["engine"], r["classic_iterations"]) for r in rows})
-        notes, labels = [], []
+        labels = [engine_label(*e) for e in engines]
+        gap = 0.32 + 0.016 * max(0, max(len(line) for t in labels for line in t.split("\n")) - 24)
+        grid = plot_area(fig, 1, 2, right=0.92, wspace=gap, width_ratios=(1, 1.15))
+        map_ax, limit_ax = fig.add_subplot(grid[0, 0]), fig.add_subplot(grid[0, 1])
+        notes = []
         for row_index, (engine, iterations) in enumerate(engines):
-            label = engine + (f" ({iterations} passes)" if iterations else "")
-            labels.append(label)
             variant = sorted({e[1] for e in engines if e[0] == engine}).index(iterations)
             kw = ctx.styles.line(engine, variant)
             mine = [r for r in rows if (r["engine"], r["classic_iterations"]) == (engine, iterations)]
             base = sorted((number(r["stiffness_scale"]), r) for r in mine if number(r["mass_ratio"]) == ratios[0])
-            shown = [(k, number(r["h_stable"])) for k, r in base if r["status"] in FOUND and number(r["h_stable"])]
-            if shown:
-                map_ax.loglog(*zip(*shown), label=label, **kw)
-            theory = [(k, number(r["theory_h"])) for k, r in base if number(r["theory_h"])]
-            if theory:
-                map_ax.loglog(*zip(*theory), color=kw["color"], lw=0.8, linestyle=(0, (4, 3)))
+            draw_map_series(map_ax, base, labels[row_index], kw)
             refused = sorted({number(r["mass_ratio"]) for r in mine if r["status"] == "refused"})
             if refused:
                 notes.append((engine, ", ".join(f"{v:g}" for v in refused)))
-            for j, ratio in enumerate(ratios):
-                at_ratio = [r for r in mine if number(r["mass_ratio"]) == ratio]
-                y = row_index + (j - (len(ratios) - 1) / 2) * 0.22
-                # Filled: the limit found (bracketed). Hollow: stable at the largest step tried, drawn
-                # there (h_stable w_max): the limit lies beyond it.
-                hw = [number(r["h_w_max"]) for r in at_ratio if r["status"] == "bracketed" and number(r["h_w_max"])]
-                limit_ax.scatter(hw, [y] * len(hw), color=kw["color"], marker=kw["marker"], s=22, alpha=0.85,
-                                 edgecolors="none")
-                capped = [number(r["h_stable"]) * number(r["w_max"]) for r in at_ratio
-                          if r["status"] == "stable-at-max" and number(r["h_stable"]) and number(r["w_max"])]
-                limit_ax.scatter(capped, [y] * len(capped), facecolors="none", edgecolors=kw["color"],
-                                 marker=kw["marker"], s=26, linewidths=1.2)
-            if not any(r["status"] == "bracketed" and number(r["h_w_max"]) for r in mine):
-                found = [r for r in mine if r["status"] in FOUND]
-                text = ("stable at every step tried" if found else
-                        "refuses this model" if any(r["status"] == "refused" for r in mine) else "never stable")
-                limit_ax.annotate(text, (0.02, row_index), xycoords=("axes fraction", "data"), va="center",
-                                  fontsize=7.5, color=kw["color"])
-            measured = [number(r["ratio"]) for r in mine if number(r["ratio"]) and r["status"] == "bracketed"]
-            c = [number(r["theory_h"]) * number(r["w_max"]) for r in mine if number(r["theory_h"])]
-            if c:
-                limit_ax.plot([c[0], c[0]], [row_index - 0.42, row_index + 0.42], color="black", lw=1.6)
-            if measured:
-                limit_ax.annotate(f"x{min(measured):.2f}..{max(measured):.2f}", (1.0, row_index),
-                                  xycoords=("axes fraction", "data"), xytext=(4, 0),
-                                  textcoords="offset points", va="center", fontsize=7)
-        limit_ax.set_xscale("log")
-        limit_ax.set_yticks(range(len(labels)), labels, fontsize=7.5)
-        limit_ax.invert_yaxis()
-        limit_ax.set_xlabel("largest stable step times the highest natural frequency, h w_max [1]")
-        limit_ax.set_title("the limit, scale-free; black bar: theory c; right: measured / theory", fontsize=9)
-        limit_ax.grid(True, axis="x", which="both", alpha=0.3)
-        map_ax.set_xlabel("spring stiffness, times the scene's own (1 = as written) [1]")
-        map_ax.set_ylabel("largest stable step [s]")
-        map_ax.set_title(f"the map at neighbour mass ratio {ratios[0]:g} (thin dashed: theory c / w_max)", fontsize=9)
-        map_ax.grid(True, which="both", alpha=0.3)
-        map_ax.legend(fontsize=7, loc="lower left")
+            draw_limit_row(limit_ax, mine, ratios, row_index, kw)
+        label_axes(map_ax, limit_ax, labels, ratios[0])
         spread = ", ".join(f"{r:g}" for r in ratios)
-        return [f"Right: one row per engine, one dot per stiffness scale, the dots of mass ratios {spread} "
-                "stacked top to bottom; a filled dot is the limit found, a hollow one a cell still stable at the "
-                "largest step tried (drawn there: its limit lies further right)."] + \
+        return [f"Left: a line joins the limits found; a hollow marker is a step still stable, the largest tried "
+                f"(the limit lies above it). Right: one row per engine, one dot per stiffness scale, the dots of "
+                f"mass ratios {spread} stacked top to bottom; filled: the limit found, hollow: stable at the largest "
+                f"step tried. The title's ratios span every cell, all mass ratios included."] + \
             [f"{engine} refuses mass ratio {ratios_text} (no dots there)." for engine, ratios_text in sorted(set(notes))]
-    return Page(f"stability_{scene}", f"Where does each engine go unstable on {scene}, and how close to theory?",
+    return Page(f"stability_{scene}", scene_title(scene, rows),
                 "Every engine's largest stable step, found by bisection, on the scene as written with all its "
                 "springs' stiffness scaled by one factor, across that factor and the neighbour "
                 "mass ratio (stiffer springs and lighter masses raise the highest natural frequency w_max, found "

@@ -131,7 +131,7 @@ ClosedFormResult pendulumPeriodError(const mysim::Model& model, const UniformCha
                            "period (run it longer)");
   }
   const double measured = (crossings.back() - crossings.front()) / (crossings.size() - 1);
-  return ClosedFormError{"pendulum period", std::abs(measured / period - 1.0), period};
+  return ClosedFormError{"pendulum period", std::abs(measured / period - 1.0), period, std::nullopt, "rel"};
 }
 
 // The elastic chain hanging between two pins, at rest: segments s = 0..S-1 of rest length L and
@@ -298,7 +298,7 @@ ClosedFormResult tautChainModeError(const mysim::Model& model, const UniformChai
   const double measured =
       2.0 * std::numbers::pi * (crossings.size() - 1) / (crossings.back() - crossings.front());
   return ClosedFormError{"taut chain, mode " + std::to_string(mode) + " frequency",
-                         std::abs(measured / exact - 1.0), exact};
+                         std::abs(measured / exact - 1.0), exact, std::nullopt, "rel"};
 }
 }  // namespace
 

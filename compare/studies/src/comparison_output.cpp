@@ -33,7 +33,9 @@ json metricsJson(const EngineMetrics& m) {
     j[info.name] = v ? json(*v) : json();
   }
   if (m.closed_form) {
-    j["closed_form"] = {{"quantity", m.closed_form->quantity}, {"exact", m.closed_form->exact}};
+    j["closed_form"] = {{"quantity", m.closed_form->quantity},
+                        {"exact", m.closed_form->exact},
+                        {"unit", m.closed_form->unit}};
     if (m.closed_form->motion_left) {
       j["closed_form"]["motion_left"] = *m.closed_form->motion_left;
       j["closed_form"]["at_motion_floor"] = m.closed_form->atMotionFloor();
@@ -68,9 +70,13 @@ std::string safeDirName(std::string engine) {
 json modelJson(const mysim::Model& model) {
   bool spring_damping = false;
   for (const mysim::Spring& s : model.springs) spring_damping |= s.damping > 0.0;
+  // Damped: something takes energy out by physics, so its drift is not a conservation check.
+  // Contact does: every collider and self-collision remove the approaching normal velocity
+  // (inelastic), and friction more.
+  const bool contact = !model.colliders.empty() || model.self_collision_thickness.has_value();
   json j = {{"kind", mysim::systemKindName(model.kind)},
             {"particles", model.particleCount()},
-            {"damped", model.drag > 0.0 || spring_damping},
+            {"damped", model.drag > 0.0 || spring_damping || contact},
             {"driven", model.wind.has_value() || model.pin_motion.has_value()},
             {"colliders", json::array()},
             {"grid", json()}};

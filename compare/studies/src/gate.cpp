@@ -55,7 +55,7 @@ CheckResult evaluateCheck(const ToleranceCheck& check, const Comparison& c) {
     }
     r.measured = metricValue(*m, check.metric);
     if (check.metric == "closed_form_error" && m->closed_form) {
-      r.unit = m->closed_form->quantity == "pendulum period" ? "rel" : "m";  // closed_form.h
+      r.unit = m->closed_form->unit;
     }
     if (check.metric == "closed_form_error" && m->closed_form && m->closed_form->atMotionFloor()) {
       r.note = "the run still moved " + formatNumber(*m->closed_form->motion_left, 2) +

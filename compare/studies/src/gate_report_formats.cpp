@@ -139,6 +139,8 @@ void writeGateJson(std::ostream& out, const GateReport& report, const std::strin
                                          : nlohmann::json(r.check.reference)},
                        {"bound", r.check.bound},
                        {"why", r.check.why},
+                       {"known_bias", r.check.known_bias.empty() ? nlohmann::json()
+                                                                 : nlohmann::json(r.check.known_bias)},
                        {"passed", r.passed},
                        {"problem", r.problem},
                        {"note", r.note},

@@ -113,6 +113,13 @@ ToleranceCheck readCheck(FieldReader& r, const fs::path& root, const EngineRegis
   if (c.why.empty()) {
     throw FieldError{r.field("why"), "expected the reason for this bound (a non-empty string)"};
   }
+  if (r.has("known_bias")) {
+    c.known_bias = r.text("known_bias");
+    if (c.known_bias.empty()) {
+      throw FieldError{r.field("known_bias"), "expected the bias this bound allows, in words "
+                                              "(a non-empty string), or no field"};
+    }
+  }
   r.refuseUnknown(kToleranceSchema);
   return c;
 }

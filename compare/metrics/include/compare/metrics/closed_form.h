@@ -23,12 +23,15 @@ namespace springcheck {
 //    largest |centroid displacement - the rigid block's| over the frames, m.
 struct ClosedFormError {
   std::string quantity;  // what was compared
-  double error = 0.0;    // m for positions, relative for the period
+  double error = 0.0;    // in `unit`
   double exact = 0.0;    // the closed-form value compared against (end position or period)
   // For a closed form of the state at rest: how far the nodes still moved over the run's last
   // tenth, m. An error not much above it is the motion left at the end, not the engine's
   // accuracy (the same for float and double engines): run longer to see that.
   std::optional<double> motion_left;
+  // "m" for a position or distance, "rel" for a relative error (a period, a frequency): the
+  // unit a table, a gate and the report print beside the error.
+  std::string unit = "m";
   // motion_left is close enough to the error to be its floor (error < 10 x motion_left).
   bool atMotionFloor() const { return motion_left && error < 10.0 * *motion_left; }
 };

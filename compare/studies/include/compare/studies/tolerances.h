@@ -18,6 +18,10 @@ struct ToleranceCheck {
   std::string metric;
   double bound = 0.0;
   std::string why;
+  // The engine's known bias this bound allows (it passes while the engine is off by that much):
+  // said beside the gate count on the report's first page, so a pass does not read as "accurate".
+  // Empty: none.
+  std::string known_bias;
   // A variant of a material scene (docs/compare.md): at another resolution and step, as a trade
   // recommends it. Absent: the scene as written.
   std::optional<int> resolution;

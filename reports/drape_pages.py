@@ -47,6 +47,17 @@ def state_words(state):
     return f"the last frame at t = {state['last_frame']:.3g} s, still moving", "last frame, still moving"
 
 
+def drape_title(c, title_words):
+    """The answer: how far apart the engines' nodes are at this frame, and whose."""
+    worst = (0.0, "", "")
+    for r in read_csv(c["node_distance"]) if c.get("node_distance") else []:
+        worst = max(worst, (number(r["distance"]) or 0.0, r["engine"], r["reference_engine"]))
+    if not worst[1]:
+        return f"{c['scene']}: {title_words} (one engine: nothing to compare)"
+    size = f"{worst[0] * 1e3:.3g} mm" if worst[0] < 1 else f"{worst[0]:.3g} m"
+    return f"{c['scene']}: engines up to {size} from {worst[2]} ({worst[1]}) on {title_words}"
+
+
 def comparison_page(c, state):
     colliders = c.get("model", {}).get("colliders") or []
     title_words, short_words = state_words(state)
@@ -87,7 +98,7 @@ def comparison_page(c, state):
         ax.set_ylabel("z [m]", fontsize=8)
         ax.set_zlabel("y [m]", fontsize=8)
         ax.tick_params(labelsize=6)
-        ax.set_title(f"{reference_name}'s cloth ({short_words}), coloured by the largest distance of any engine",
+        ax.set_title(f"{reference_name}'s cloth ({short_words}),\ncoloured by the largest distance of any engine",
                      fontsize=8.5)
         # The flat view that shows most: across the shape's two largest extents (from above for a
         # cloth lying on a sphere, from the front for a hanging one).
@@ -117,8 +128,7 @@ def comparison_page(c, state):
                          "not of rest shapes (the trajectory difference, over every frame, is the comparison).")
         return notes + ([] if others else ["Only one engine finished: nothing to compare it with."])
 
-    return Page(f"drape_{c['group'].replace('/', '_')}_{c['scene']}",
-                f"Where do the engines disagree on {title_words}? ({c['scene']})",
+    return Page(f"drape_{c['group'].replace('/', '_')}_{c['scene']}", drape_title(c, title_words),
                 "Left: the last frame of the first engine in true proportions (equal axes), the colliders as "
                 "wire frames where the scene has them, each triangle coloured by the largest distance any other "
                 "engine's node has from this one. Right: the nodes flat, across the shape's two largest extents, one "

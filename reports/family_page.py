@@ -3,7 +3,7 @@ the sweep was recommended at (springcheck recommend's per_family and closest_per
 import json
 import os
 
-from report_style import Page, plot_area
+from report_style import Page, plot_area, window_text
 
 BOUND_COLOURS = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728"]
 
@@ -22,7 +22,21 @@ def setting(choice):
     return f"{what}, dt 1/{1 / choice['dt']:.0f} s"
 
 
-def family_page(sweep, bounds):
+def family_title(sweep, bounds, window):
+    """The answer: per scene, the cheapest family under the tightest bound any family meets."""
+    parts = []
+    for b in sorted(bounds, key=lambda b: b["max_error"]):
+        with open(b["path"]) as f:
+            for r in json.load(f)["recommendations"]:
+                scene = os.path.basename(r["scene"]).removesuffix(".json")
+                if r.get("best") and not any(p.startswith(scene + ":") for p in parts):
+                    parts.append(f"{scene}: {family_label(r['best'])} under {metres(b['max_error'])}")
+    if not parts:
+        return f"No solver family meets the bounds ({sweep})"
+    return f"Cheapest family {window}: " + "; ".join(parts)
+
+
+def family_page(sweep, bounds, window):
     bounds = sorted(bounds, key=lambda b: -b["max_error"])  # the loosest first
 
     def draw(fig, ctx):
@@ -69,10 +83,9 @@ def family_page(sweep, bounds):
         return notes
 
     listed = " and ".join(metres(b["max_error"]) for b in bounds)
-    return Page(f"solver_families_{sweep}",
-                f"Which solver family should I use for this cloth at this error? ({sweep})",
+    return Page(f"solver_families_{sweep}", family_title(sweep, bounds, window),
                 f"Each family's cheapest run whose error (max over frames of the RMS node distance to the "
-                f"sweep's converged reference) stays under {listed}: the bar is its realtime factor, the "
+                f"sweep's converged reference, {window}) stays under {listed}: the bar is its realtime factor, the "
                 "label its setting. Families are mysim's integrator families of the catalogue and each Bullet "
                 "engine; 'none' means no step of the sweep gets that family under the bound, with the "
                 "smallest error it reached. Rows run from the most accurate family down. The dotted line "
@@ -83,4 +96,6 @@ def pages(manifest):
     by_sweep = {}
     for b in manifest.get("recommendation_bounds", []):
         by_sweep.setdefault(b["sweep"], []).append(b)
-    return [family_page(sweep, bounds) for sweep, bounds in sorted(by_sweep.items()) if len(bounds) >= 2]
+    windows = {s["name"]: window_text(s) for s in manifest.get("sweeps", [])}
+    return [family_page(sweep, bounds, windows.get(sweep, window_text(None)))
+            for sweep, bounds in sorted(by_sweep.items()) if len(bounds) >= 2]

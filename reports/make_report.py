@@ -42,10 +42,12 @@ class Context:
 
 
 def draw_title(fig, title):
-    """The page's answer: one line of 14-point bold holds about 100 characters of the A4 width; a
-    longer one goes on two lines of smaller type (never cut at the edges, clear of the command)."""
-    if len(title) <= 100:
-        fig.text(0.5, 0.955, title, ha="center", va="center", fontsize=14, weight="bold")
+    """The page's answer: one line of 14-point bold holds about 100 characters of the A4 width (up
+    to 120 in smaller type); a longer one goes on two lines of smaller type (never cut at the
+    edges, clear of the command)."""
+    if len(title) <= 120:
+        fig.text(0.5, 0.955, title, ha="center", va="center", fontsize=min(14, 14 * 100 / len(title)),
+                 weight="bold")
         return
     lines = textwrap.wrap(title, max(len(title) // 2 + 10, 60))
     size = min(12, 12 * 118 / max(len(line) for line in lines))

@@ -76,6 +76,12 @@ def number(text):
     return value if math.isfinite(value) else None
 
 
+def window_text(sweep):
+    """The time a sweep's errors are over (its runs' simulated time), for captions and titles."""
+    window = (sweep or {}).get("window")
+    return f"over the first {window:.3g} s of the scene" if window else "over the sweep's runs"
+
+
 def read_csv(path):
     with open(path, newline="") as f:
         return list(csv.DictReader(f))

@@ -1,11 +1,12 @@
 """Speed against accuracy, and convergence, from the sweep tables."""
+import json
 import math
 import os
 from collections import defaultdict
 
 import numpy as np
 
-from report_style import Page, coincident, draw_coincidences, number, plot_area, read_csv
+from report_style import Page, coincident, draw_coincidences, number, plot_area, read_csv, window_text
 
 
 def series_key(row):
@@ -116,7 +117,26 @@ def draw_precision_floors(ax, rows):
         ax.axhline(floor, ls=":", color="black", lw=1.2, label=f"float32 floor of {label}")
 
 
-def speed_accuracy_page(sweep, bounds):
+def speed_title(sweep, recommendation):
+    """The answer: the cheapest run under the recommendation's bound, per scene (at most two)."""
+    if not recommendation:
+        return f"Which engine and step reach a given error soonest? ({sweep['name']})"
+    with open(recommendation["path"]) as f:
+        rec = json.load(f)
+    parts = []
+    for r in rec["recommendations"][:2]:
+        scene = os.path.basename(r["scene"]).removesuffix(".json") + f" x{r['stiffness_scale']:g}"
+        best = r.get("best")
+        if best:
+            how = best["engine"] + (f" {best['integrator']}" if best.get("integrator", "-") != "-" else "")
+            parts.append(f"{scene}: {how} at {best['dt'] * 1e3:.3g} ms ({best['realtime_factor']:.3g}x realtime)")
+        else:
+            parts.append(f"{scene}: no run")
+    more = f"; {len(rec['recommendations']) - 2} more scenes" if len(rec["recommendations"]) > 2 else ""
+    return (f"Cheapest under {rec['max_error'] * 1e3:g} mm {window_text(sweep)}: " + "; ".join(parts) + more)
+
+
+def speed_accuracy_page(sweep, bounds, recommendation=None):
     def draw(fig, ctx):
         rows = read_csv(sweep["path"])
         # One panel per scene and stiffness: runs of different scenes never share a line.
@@ -153,13 +173,45 @@ def speed_accuracy_page(sweep, bounds):
         lost = [f"{n}: {', '.join(sorted(b))}" for n, b in blown.items() if b]
         return notes + ([f"Runs that blew up or hit a limit are left out ({'; '.join(lost)})."] if lost else [])
     reference = "the converged reference named in the table"
-    return Page(f"speed_accuracy_{sweep['name']}",
-                f"Which engine and step reach a given error soonest? ({sweep['name']})",
+    return Page(f"speed_accuracy_{sweep['name']}", speed_title(sweep, recommendation),
                 f"Each point is one run of the sweep: its error against {reference} (max over frames of "
-                "the RMS node distance) against the wall time of its stepping. Lower left is better; the "
+                f"the RMS node distance, {window_text(sweep)}) against the wall time of its stepping. Lower left is better; the "
                 "grey staircase is the Pareto front, the runs no other run beats on both. Points on one "
                 "line are one engine or integrator at different steps (its first and last labelled with the "
                 "step); the red dashed lines are the error bounds the recommendation is asked for.", draw)
+
+
+def place_order_labels(ax, orders):
+    """Writes each order left of its series' finest point, moved apart vertically where series
+    end close together (labels never overlap): at least 1/25 of the axis' decades between them."""
+    if not orders:
+        return
+    ax.relim()
+    ax.autoscale_view()
+    low, high = (math.log10(v) for v in ax.get_ylim())
+    gap = (high - low) / 25
+    placed = []
+    for (x, y), text, colour in sorted(orders, key=lambda o: o[0][1]):
+        at = max(math.log10(y), placed[-1] + gap) if placed else math.log10(y)
+        placed.append(at)
+        ax.annotate(text, (x, 10 ** at), xytext=(-4, 0), textcoords="offset points", ha="right", va="center",
+                    fontsize=7, color=colour)
+
+
+def convergence_title(sweep):
+    """The answer: each series' observed order on the sweep's first scene, highest first."""
+    rows = read_csv(sweep["path"])
+    if not rows:
+        return f"Does each method converge at its order? ({sweep['name']})"
+    scale = min(number(r["stiffness_scale"]) for r in rows)
+    first = rows[0]["scene"]
+    series, _ = collect([r for r in rows if r["scene"] == first and number(r["stiffness_scale"]) == scale], "dt")
+    orders = sorted(((fitted_order(pts), label.removeprefix("mysim:")) for label, pts in series.items()
+                     if fitted_order(pts) is not None), reverse=True)
+    if not orders:
+        return f"Does each method converge at its order? ({sweep['name']}: no series with two finished steps)"
+    scene = os.path.basename(first).removesuffix(".json")
+    return f"Observed orders on {scene} {window_text(sweep)}: " + ", ".join(f"{n} {o:.2f}" for o, n in orders)
 
 
 def convergence_page(sweep):
@@ -180,11 +232,9 @@ def convergence_page(sweep):
             notes += draw_series(ax, series, variants, ctx)
             draw_precision_floors(ax, part)
             # Each series' observed order (least-squares slope), written at its finest step.
-            for label, pts in series.items():
-                order = fitted_order(pts)
-                if order is not None:
-                    ax.annotate(f"{order:.2f}", pts[0], xytext=(-4, 0), textcoords="offset points",
-                                ha="right", va="center", fontsize=7, color=ctx.styles.line(*variants[label])["color"])
+            orders = [(pts[0], f"{fitted_order(pts):.2f}", ctx.styles.line(*variants[label])["color"])
+                      for label, pts in series.items() if fitted_order(pts) is not None]
+            place_order_labels(ax, orders)
             ax.set_xlabel("step dt [s]")
             refs = sorted({r["reference"] for r in part if r.get("reference")})
             ax.set_ylabel(f"error against {', '.join(refs) or 'the reference'} [m]")
@@ -195,10 +245,9 @@ def convergence_page(sweep):
         return notes
     against = ("each engine against itself at a finer step (self-consistency), so Bullet is measured "
                "against Bullet" if sweep["self_reference"] else "one converged reference run")
-    return Page(f"convergence_{sweep['name']}",
-                f"Does each method converge at its order? ({sweep['name']})",
-                f"Error of every finished run against {against}, over the step, log-log, at the sweep's "
-                "lowest stiffness. The number left of each line's finest step is its observed order of "
+    return Page(f"convergence_{sweep['name']}", convergence_title(sweep),
+                f"Error of every finished run against {against} ({window_text(sweep)}), over the step, "
+                "log-log, at the sweep's lowest stiffness. The number left of each line's finest step is its observed order of "
                 "convergence, the least-squares slope of log error over log step (1 for Euler-type schemes, "
                 "2 for Verlet and Heun, 4 for RK4 is the theory); a line that flattens has hit the error of "
                 "its reference or its solver tolerance, and its fitted order then reads low.", draw)
@@ -211,4 +260,6 @@ def pages(manifest):
     bounds = defaultdict(set)
     for b in manifest.get("recommendation_bounds") or []:
         bounds[b["sweep"]].add(b["max_error"])
-    return [speed_accuracy_page(s, bounds[s["name"]]) for s in shared] + [convergence_page(s) for s in sweeps]
+    recommendations = {r["sweep"]: r for r in manifest.get("recommendations", [])}
+    return [speed_accuracy_page(s, bounds[s["name"]], recommendations.get(s["name"])) for s in shared] + \
+        [convergence_page(s) for s in sweeps]

@@ -12,6 +12,7 @@
 #include "compare/io/csv.h"
 #include "compare/io/invocation.h"
 #include "compare/io/report_headlines.h"
+#include "report_tables.h"
 
 namespace springcheck {
 namespace {
@@ -76,6 +77,26 @@ std::string firstValue(const fs::path& table, const std::string& column) {
     if ((*names)[i] == column) return (*values)[i];
   }
   return "";
+}
+
+// A sweep's table for the pages, with the window its errors are over: the simulated time of its
+// longest finished case (steps x dt), which the pages state (an error "max over frames" of a 2 s
+// run says nothing of the 12 s one).
+json sweepEntry(const fs::path& table, bool self_reference) {
+  double window = 0.0;
+  for (const report_tables::Row& row : report_tables::readTable(table.string())) {
+    auto cell = [&](const char* name) {
+      const auto it = row.find(name);
+      return it == row.end() ? std::nullopt : report_tables::number(it->second);
+    };
+    const auto dt = cell("dt"), steps = cell("steps");
+    if (dt && steps && row.count("status") && row.at("status") == "ok") {
+      window = std::max(window, *dt * *steps);
+    }
+  }
+  return {{"name", table.stem().string()}, {"path", table.string()},
+          {"self_reference", self_reference}, {"command", invocationBeside(table.string())},
+          {"window", window > 0.0 ? json(window) : json()}};
 }
 
 // Every folder under `results` holding a comparison.json (suite/SCENE, energy/SCENE,
@@ -186,8 +207,7 @@ std::expected<json, std::string> reportManifest(const std::string& results_dir,
   for (const fs::path& table : filesIn(results / "sweep", "", ".csv")) {
     const std::string name = table.stem().string();
     const bool self = firstValue(table, "reference").starts_with("self");
-    m["sweeps"].push_back({{"name", name}, {"path", table.string()}, {"self_reference", self},
-                           {"command", invocationBeside(table.string())}});
+    m["sweeps"].push_back(sweepEntry(table, self));
     const fs::path rec = results / "recommend" / (name + ".json");
     if (fs::exists(rec)) {
       m["recommendations"].push_back({{"sweep", name}, {"path", rec.string()}});

@@ -12,7 +12,7 @@ WITHOUT = {}  # reason -> scenes: suite scenes with no closed form, grouped by w
 
 
 def rows_of(m):
-    """(scene, quantity, exact, {engine: (error, at motion floor)}) for each suite scene with one.
+    """(scene, quantity, exact, unit, {engine: (error, at motion floor)}) for each suite scene with one.
     An engine that blew up on such a scene gets the text "blew up" instead of an error."""
     rows = []
     WITHOUT.clear()
@@ -21,13 +21,13 @@ def rows_of(m):
             continue
         with open(c["folder"] + "/comparison.json") as f:
             j = json.load(f)
-        errors, quantity, exact, why_not = {}, None, None, None
+        errors, quantity, exact, why_not, unit = {}, None, None, None, "m"
         for e in j["engines"]:
             if e["engine"] == "mysim" and e.get("integrator"):
                 STEPPERS.add(e["integrator"])
             form = e.get("closed_form")
             if form and e.get("closed_form_error") is not None:
-                quantity, exact = form["quantity"], form["exact"]
+                quantity, exact, unit = form["quantity"], form["exact"], form.get("unit", "m")
                 errors[e["engine"]] = (e["closed_form_error"], form.get("at_motion_floor", False))
             elif e.get("blowup_time") is not None:
                 errors[e["engine"]] = ("blew up", False)
@@ -36,7 +36,7 @@ def rows_of(m):
         for r in j.get("refused", []):
             errors.setdefault(r["engine"], ("refused", False))
         if quantity is not None:
-            rows.append((c["scene"], quantity, exact, errors))
+            rows.append((c["scene"], quantity, exact, unit, errors))
         elif why_not:
             WITHOUT.setdefault(why_not, []).append(c["scene"])
     return rows
@@ -51,14 +51,13 @@ def draw(fig, ctx):
     rows = rows_of(ctx.manifest)
     if not rows:
         return ["No suite scene with a closed form in the results."]
-    engines = sorted({e for _, _, _, errors in rows for e in errors})
+    engines = sorted({e for *_, errors in rows for e in errors})
     ax = fig.add_axes((0.06, 0.3, 0.9, 0.55))
     ax.axis("off")
-    def unit(quantity):  # frequencies and periods are compared relatively, shapes in metres
-        return "rel" if "period" in quantity or "frequency" in quantity else "m"
     cells = []
-    for scene, quantity, exact, errors in rows:
-        line = [scene, quantity, f"{exact:.4g}", unit(quantity)]
+    for scene, quantity, exact, unit, errors in rows:
+        # The quantity's name without its particulars (a capstan's loads), which overran the cell.
+        line = [scene, quantity.split(" (")[0], f"{exact:.4g}", unit]
         for e in engines:
             if e in errors:
                 value, floor = errors[e]
@@ -92,8 +91,16 @@ def draw(fig, ctx):
             "'blew up': no error is measured on a run that stopped early; 'refused': the engine cannot run the scene (its table says why)."]
 
 
-def page():
-    return Page("closed_forms", "How far is each engine from the exact answers?",
+def title(ctx):
+    """The answer: how many closed forms each engine meets to 1 % (springcheck report's verdicts)."""
+    parts = [f"{v['engine']} {v['closed_forms']['trusted']}/{v['closed_forms']['scenes']}"
+             for v in ctx.manifest.get("headlines", {}).get("verdicts", []) if v.get("closed_forms")]
+    return ("How far is each engine from the exact answers? Within 1 %: " + ", ".join(parts) if parts
+            else "How far is each engine from the exact answers?")
+
+
+def page(ctx):
+    return Page("closed_forms", title(ctx),
                 "Each suite scene with a closed form (the column 'closed form' names it: the circle, the pendulum's "
                 "period, the hanging chain and the two-pin catenary at rest, the damped oscillator, the taut "
                 "chain's mode, the clamped strip's heavy elastica, a body on a plane with friction, the capstan), and each engine's error against it. Scenes "

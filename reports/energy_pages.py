@@ -12,24 +12,49 @@ def label(engine):
     return engine["name"] + (f" ({engine['integrator']})" if plain else "")
 
 
+def drift_column(c, damped):
+    """Damped scenes: each engine against the comparison's energy reference (the run of the
+    highest-order fixed-step integrator), as springcheck computed it; else the balance itself.
+    Returns (column, the reference engine or None)."""
+    reference = None
+    if damped and c.get("energy_reference"):
+        reference = next((e for e in c["engines"] if e["name"] == c["energy_reference"]), None)
+    return ("energy_drift_vs_reference" if reference is not None else "energy_drift_total"), reference
+
+
+def read_drift(c, column):
+    drift = defaultdict(dict)  # engine -> t -> the drawn value
+    for r in read_csv(c["series"]):
+        value = number(r.get(column))
+        if value is not None:
+            drift[r["engine"]][r["t"]] = abs(value)
+    return drift
+
+
+def energy_title(c, damped):
+    """The answer: how many engines keep the drawn drift within 1 % of E_ref, and the worst."""
+    column, _ = drift_column(c, damped)
+    drift = read_drift(c, column)
+    worst = {e["name"]: max(drift[e["name"]].values()) for e in c["engines"] if drift.get(e["name"])}
+    if not worst:
+        return f"Does each engine keep the energy it should? ({c['scene']})"
+    kept = [n for n, w in worst.items() if w <= 0.01 and
+            next(e for e in c["engines"] if e["name"] == n)["status"] == "ok"]
+    name = max(worst, key=worst.get)
+    beyond = " beyond the physical loss" if damped else ""
+    return (f"{c['scene']} ({'damped' if damped else 'undamped'}): {len(kept)} of {len(worst)} engines keep the "
+            f"energy within 1 % of E_ref{beyond}; worst {name} ({worst[name]:.2g})")
+
+
 def comparison_page(c):
     model = c.get("model", {})
     damped = bool(model.get("damped"))
     driven = bool(model.get("driven"))
 
     def draw(fig, ctx):
-        ax = fig.add_subplot(plot_area(fig)[0, 0])
-        # Damped scenes: each engine against the comparison's energy reference (the run of the
-        # highest-order fixed-step integrator), as springcheck computed it; else the balance itself.
-        reference = None
-        if damped and c.get("energy_reference"):
-            reference = next((e for e in c["engines"] if e["name"] == c["energy_reference"]), None)
-        column = "energy_drift_vs_reference" if reference is not None else "energy_drift_total"
-        drift = defaultdict(dict)  # engine -> t -> the drawn value
-        for r in read_csv(c["series"]):
-            value = number(r.get(column))
-            if value is not None:
-                drift[r["engine"]][r["t"]] = abs(value)
+        ax = fig.add_subplot(plot_area(fig, right=0.8)[0, 0])
+        column, reference = drift_column(c, damped)
+        drift = read_drift(c, column)
         engines = [e for e in c["engines"] if e["name"] in drift]
         notes, drawn = [], {}
         for e in engines:
@@ -51,7 +76,7 @@ def comparison_page(c):
             ax.set_ylabel("|E(t) - E(0) - W(t)| / E_ref [1]")
         ax.set_ylim(bottom=FLOOR)
         ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=7, ncol=3, loc="lower right")
+        ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)
         return notes
 
     scene = c["scene"]
@@ -67,7 +92,7 @@ def comparison_page(c):
                    "energy scale). A flat band is bounded oscillation (symplectic methods); a line that keeps "
                    "rising is drift; a line that ends has blown up.")
     return Page(f"energy_{c['group'].replace('/', '_')}_{scene}",
-                f"Does each engine keep the energy it should? ({scene}, {'damped' if damped else 'undamped'})",
+                energy_title(c, damped),
                 caption, draw)
 
 

@@ -52,7 +52,7 @@ def draw_front(ax, a, rows):
                     textcoords="offset points", xytext=(8, -14), fontsize=7)
     ax.set_xlabel("wall time of the run, s")
     ax.set_ylabel(f"|physical error|, {a['unit']}")
-    ax.legend(fontsize=6, loc="lower left")
+    ax.legend(fontsize=6.5, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)  # off the points
 
 
 def draw_budgets(ax, a):
@@ -81,7 +81,7 @@ def draw_budgets(ax, a):
     ax.set_xticks(range(len(chosen)), [c[0] for c in chosen], fontsize=6)
     ax.set_ylabel(f"signed error part, {a['unit']}")
     if chosen:
-        ax.legend(fontsize=6)
+        ax.legend(fontsize=6.5, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)
 
 
 def page(study):
@@ -90,7 +90,7 @@ def page(study):
     rows = read_csv(study["table"])
 
     def draw(fig, ctx):
-        grid = plot_area(fig, 1, 2, wspace=0.35)
+        grid = plot_area(fig, 1, 2, right=0.88, wspace=0.5)
         draw_front(fig.add_subplot(grid[0, 0]), a, rows)
         draw_budgets(fig.add_subplot(grid[0, 1]), a)
         notes = []

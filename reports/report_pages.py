@@ -25,7 +25,7 @@ def pages(ctx):
     if m.get("headlines", {}).get("verdicts"):
         result.insert(1, verdict_page.page(ctx))
     if any(c["group"] == "suite" for c in m["comparisons"]):
-        result.insert(2, closed_form_page.page())
+        result.insert(2, closed_form_page.page(ctx))
     result += contact_page.pages(m)
     result += family_page.pages(m)
     result += trade_pages.pages(m)

@@ -8,49 +8,77 @@ from report_style import Page, number, plot_area, read_csv
 FOUND = ("bracketed", "stable-at-max")
 
 
+def oscillator_title(rows):
+    """The answer: how close the schemes with a theory come to it, and which never went unstable."""
+    ratios = defaultdict(list)
+    stable = set()
+    for r in rows:
+        if r["status"] == "bracketed" and number(r["ratio"]):
+            ratios[r["integrator"]].append(number(r["ratio"]))
+        elif r["status"] == "stable-at-max":
+            stable.add(r["integrator"])
+    if not ratios:
+        return "How close does each integrator come to its theoretical step limit?"
+    low = min(ratios, key=lambda n: min(ratios[n]))
+    high = max(ratios, key=lambda n: max(ratios[n]))
+    text = (f"Oscillator: limits at x{min(ratios[low]):.2f} ({integrator_label(low)}) to "
+            f"x{max(ratios[high]):.2f} ({integrator_label(high)}) of theory")
+    return text + (f"; {len(stable)} stable at every step tried" if stable else "")
+
+
+def oscillator_series(ratio_ax, map_ax, key, mine, kw):
+    """One integrator: its measured / theory where it has a theory, its map (a line through the
+    limits found, hollow markers where stable at the largest step tried), its theory dashed;
+    returns what to say of it when it has no theory."""
+    ratios = [(k, number(r["ratio"])) for k, r in mine if r["status"] == "bracketed" and number(r["ratio"])]
+    if ratios:
+        ratio_ax.semilogx(*zip(*ratios), label=key, **kw)
+    found = [(k, number(r["h_stable"])) for k, r in mine if r["status"] == "bracketed"]
+    capped = [(k, number(r["h_stable"])) for k, r in mine if r["status"] == "stable-at-max"]
+    if found:
+        map_ax.loglog(*zip(*found), label=key, **kw)
+    if capped:
+        map_ax.loglog(*zip(*capped), linestyle="none", marker=kw["marker"], markerfacecolor="none",
+                      markeredgecolor=kw["color"], markersize=7, label=None if found else key + " (stable)")
+    theory = [(k, number(r["theory_h"])) for k, r in mine if number(r["theory_h"])]
+    if theory:
+        map_ax.loglog(*zip(*theory), color=kw["color"], lw=0.8, linestyle=(0, (4, 3)))
+    if ratios:
+        return None
+    hw = [number(r["h_stable"]) * number(r["omega"]) for _, r in mine if r["status"] == "bracketed"]
+    return f"{key}: " + ("stable at every step tried" if capped else
+                         f"limit h w = {np.median(hw):.3g}, no theory" if hw else "no stable step")
+
+
 def oscillator_page(path):
+    rows = read_csv(path)
+
     def draw(fig, ctx):
-        rows = read_csv(path)
         masses = sorted({number(r["mass"]) for r in rows})
         mass = masses[len(masses) // 2]
-        grid = plot_area(fig, 1, 2, wspace=0.28)
+        grid = plot_area(fig, 1, 2, right=0.8, wspace=0.28)
         ratio_ax, map_ax = fig.add_subplot(grid[0, 0]), fig.add_subplot(grid[0, 1])
         untheorised = []
         for method in sorted({r["integrator"] for r in rows}):
             key = f"mysim:{method}"
-            kw = ctx.styles.line(key)
             mine = sorted((number(r["stiffness"]), r) for r in rows
                           if r["integrator"] == method and number(r["mass"]) == mass)
-            ratios = [(k, number(r["ratio"])) for k, r in mine if r["status"] == "bracketed" and number(r["ratio"])]
-            if ratios:
-                ratio_ax.semilogx(*zip(*ratios), label=key, **kw)
-            else:
-                hw = [number(r["h_stable"]) * number(r["omega"]) for _, r in mine if r["status"] in FOUND]
-                capped = any(r["status"] == "stable-at-max" for _, r in mine)
-                untheorised.append(f"{key}: " + ("stable at every step tried" if capped else
-                                                 f"limit h w = {np.median(hw):.3g}, no theory" if hw else "no stable step"))
-            shown = [(k, number(r["h_stable"])) for k, r in mine if r["status"] in FOUND]
-            if shown:
-                map_ax.loglog(*zip(*shown), label=key, **kw)
-            theory = [(k, number(r["theory_h"])) for k, r in mine if number(r["theory_h"])]
-            if theory:
-                map_ax.loglog(*zip(*theory), color=kw["color"], lw=0.8, linestyle=(0, (4, 3)))
+            said = oscillator_series(ratio_ax, map_ax, key, mine, ctx.styles.line(key))
+            if said:
+                untheorised.append(said)
         ratio_ax.axhline(1.0, color="black", lw=1)
         ratio_ax.set_xlabel("spring stiffness k [N/m]")
         ratio_ax.set_ylabel("largest stable step measured / theory [1]")
         ratio_ax.set_title(f"measured over theory (m = {mass:g} kg)", fontsize=10)
         ratio_ax.grid(True, which="both", alpha=0.3)
-        ratio_ax.legend(fontsize=7, loc="center right")
-        if untheorised:
-            ratio_ax.text(0.02, 0.98, "\n".join(untheorised), transform=ratio_ax.transAxes, fontsize=7,
-                          va="top", bbox=dict(facecolor="white", edgecolor="0.8"))
         map_ax.set_xlabel("spring stiffness k [N/m]")
         map_ax.set_ylabel("largest stable step [s]")
-        map_ax.set_title("the map (thin dashed: theory)", fontsize=10)
+        map_ax.set_title("the map (thin dashed: theory; hollow: stable at the largest step tried)", fontsize=9)
         map_ax.grid(True, which="both", alpha=0.3)
-        map_ax.legend(fontsize=7)
-        return []
-    return Page("stability_oscillator", "How close does each integrator come to its theoretical step limit?",
+        handles, labels = map_ax.get_legend_handles_labels()
+        fig.legend(handles, labels, loc="upper left", bbox_to_anchor=(0.81, 0.88), fontsize=7.5, frameon=False)
+        return ["Without a theory: " + "; ".join(untheorised) + "."] if untheorised else []
+    return Page("stability_oscillator", oscillator_title(rows),
                 "Left: the largest step each integrator survives on a single damped oscillator, divided by the "
                 "theory for its scheme (1 = exactly as predicted; above 1, the damping helps). The problem is "
                 "scale-free, so the ratio is the finding and the map on the right is only parallel lines: "
@@ -103,7 +131,9 @@ def extremes_page(path):
         return []
     return Page("stability_extremes", extremes_title(rows),
                 "springcheck stability --extremes: a million steps of the oscillator at h w = 0.1 (energy drift "
-                "relative to the start: its largest excursion and its value at the end, signed; wall time), and "
+                "relative to the start: its largest excursion and its value at the end, signed; wall time, of "
+                "runs made side by side on the machine's cores (--jobs), so a comparison of two rows' times is "
+                "of a shared machine, not of the schemes alone), and "
                 "one step of a 256 x 256 cloth. Bounded drift over a million steps is the symplectic signature. "
                 "An end drift of -1 means the energy is gone (a dissipative scheme: backward Euler); +1 means "
                 "it doubled (a scheme that pumps energy in: Heun's explicit method, which mysim calls "

@@ -54,7 +54,7 @@ def drape_title(c, title_words):
         worst = max(worst, (number(r["distance"]) or 0.0, r["engine"], r["reference_engine"]))
     if not worst[1]:
         return f"{c['scene']}: {title_words} (one engine: nothing to compare)"
-    size = f"{worst[0] * 1e3:.3g} mm" if worst[0] < 1 else f"{worst[0]:.3g} m"
+    size = f"{worst[0]:.2g} m" if 0 < worst[0] < 1e-6 or worst[0] >= 1 else f"{worst[0] * 1e3:.3g} mm"
     return f"{c['scene']}: engines up to {size} from {worst[2]} ({worst[1]}) on {title_words}"
 
 

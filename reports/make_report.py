@@ -49,7 +49,7 @@ def draw_title(fig, title):
         fig.text(0.5, 0.955, title, ha="center", va="center", fontsize=min(14, 14 * 100 / len(title)),
                  weight="bold")
         return
-    lines = textwrap.wrap(title, max(len(title) // 2 + 10, 60))
+    lines = textwrap.wrap(title, max(len(title) // 2 + 10, 60), break_on_hyphens=False)
     size = min(12, 12 * 118 / max(len(line) for line in lines))
     fig.text(0.5, 0.963, "\n".join(lines), ha="center", va="center", fontsize=size, weight="bold",
              linespacing=1.1)
@@ -106,6 +106,10 @@ def main():
     os.replace(tmp_path, pdf_path)  # whole or not at all
     with open(os.path.join(args.out, "claims.json"), "w") as f:
         json.dump(ctx.claims, f, indent=1)
+    # Each page's key and title (its answer), in order: what a reader sees first, listed for a
+    # review or a test without opening the PDF.
+    with open(os.path.join(args.out, "pages.json"), "w") as f:
+        json.dump([{"page": i + 1, "key": p.key, "title": p.title} for i, p in enumerate(pages)], f, indent=1)
     print(f"report: {pdf_path} and {len(pages)} PNGs in {args.out}")
 
 

@@ -301,7 +301,10 @@ def scene_page(entry):
                 "springs' stiffness scaled by one factor, across that factor and the neighbour "
                 "mass ratio (stiffer springs and lighter masses raise the highest natural frequency w_max, found "
                 "by Lanczos). Left: the step itself. Right: h w_max, which removes the scale: an engine whose "
-                "dots sit on its black bar is exactly as stable as its scheme's theory.", draw)
+                "dots sit on its black bar is exactly as stable as its scheme's theory. Each trial runs a fixed "
+                "number of steps from the scene's seeded start (springcheck stability --steps, 4000 unless the "
+                "command above says otherwise), so a limit holds for that many steps, not for the scene's own "
+                "duration.", draw)
 
 
 def pages(manifest):

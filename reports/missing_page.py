@@ -20,7 +20,9 @@ def page(missing):
                 y -= 0.022
             y -= 0.01
         return []
-    return Page("missing_inputs", "What is missing from this report, and how to make it",
+    what = ", ".join(sorted({m["pages"] for m in missing}))
+    return Page("missing_inputs", f"{len(missing)} input{'s' if len(missing) != 1 else ''} missing, so these pages "
+                f"are left out: {what} (the command that makes each below)",
                 "These tables were not in the results folder, so their pages are left out. Run each "
                 "command (from any folder; paths as given), then `springcheck report` again. The main job, "
                 "scripts/run-suite.sh, makes all of them.", draw)

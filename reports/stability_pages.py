@@ -201,7 +201,7 @@ def scene_title(scene, rows):
                      f"x{max(s[2] for s in theory):.2f} of their theory")
     if limited:
         low, high = min(summary[n][1] for n in limited), max(summary[n][2] for n in limited)
-        parts.append(f"{names(limited, 1)} limited at h w_max {plain(low)} to {plain(high)} (no theory)")
+        parts.append(f"{names(limited, 1)} limited at h\u00a0w_max {plain(low)} to {plain(high)} (no theory)")
     if stable:
         parts.append(f"{names(stable)} stable at every step tried")
     return f"{scene}: " + ("; ".join(parts) if parts else "no engine has a stable step")
@@ -264,7 +264,7 @@ def label_axes(map_ax, limit_ax, labels, ratio):
     map_ax.set_ylabel("largest stable step [s]")
     map_ax.set_title(f"the map at neighbour mass ratio {ratio:g} only (thin dashed: theory c / w_max)", fontsize=9)
     map_ax.grid(True, which="both", alpha=0.3)
-    map_ax.legend(fontsize=6.5, loc="lower left")
+    # No legend over the lines: each engine keeps its colour and marker in its row on the right.
 
 
 def scene_page(entry):
@@ -291,8 +291,8 @@ def scene_page(entry):
             draw_limit_row(limit_ax, mine, ratios, row_index, kw)
         label_axes(map_ax, limit_ax, labels, ratios[0])
         spread = ", ".join(f"{r:g}" for r in ratios)
-        return [f"Left: a line joins the limits found; a hollow marker is a step still stable, the largest tried "
-                f"(the limit lies above it). Right: one row per engine, one dot per stiffness scale, the dots of "
+        return [f"Left: a line joins the limits found (each engine in the colour and marker of its row on the "
+                f"right); a hollow marker is a step still stable, the largest tried (the limit lies above it). Right: one row per engine, one dot per stiffness scale, the dots of "
                 f"mass ratios {spread} stacked top to bottom; filled: the limit found, hollow: stable at the largest "
                 f"step tried. The title's ratios span every cell, all mass ratios included."] + \
             [f"{engine} refuses mass ratio {ratios_text} (no dots there)." for engine, ratios_text in sorted(set(notes))]

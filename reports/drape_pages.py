@@ -6,6 +6,7 @@ from collections import defaultdict
 
 import numpy as np
 from matplotlib import cm, colors
+from matplotlib.ticker import MaxNLocator
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
 import colliders as colliders_drawing
@@ -98,6 +99,8 @@ def comparison_page(c, state):
         ax.set_ylabel("z [m]", fontsize=8)
         ax.set_zlabel("y [m]", fontsize=8)
         ax.tick_params(labelsize=6)
+        for axis in (ax.xaxis, ax.yaxis, ax.zaxis):  # a short axis (a flat cloth's height) kept legible
+            axis.set_major_locator(MaxNLocator(4))
         ax.set_title(f"{reference_name}'s cloth ({short_words}),\ncoloured by the largest distance of any engine",
                      fontsize=8.5)
         # The flat view that shows most: across the shape's two largest extents (from above for a

@@ -76,6 +76,23 @@ def number(text):
     return value if math.isfinite(value) else None
 
 
+def wrap_setup(label, width=26):
+    """An engine or integrator with its parameters (mysim:xpbd:substeps=1:iterations=10:tolerance=0)
+    on lines of at most `width` characters, broken after a ':' (never inside a parameter), so a
+    legend or a row name stays on the page."""
+    parts = label.split(":")
+    if len(label) <= width or len(parts) <= 2:
+        return label
+    lines, line = [], ":".join(parts[:2])
+    for part in parts[2:]:
+        if len(line) + 1 + len(part) > width:
+            lines.append(line + ":")
+            line = part
+        else:
+            line += ":" + part
+    return "\n".join(lines + [line])
+
+
 def window_text(sweep):
     """The time a sweep's errors are over (its runs' simulated time), for captions and titles."""
     window = (sweep or {}).get("window")

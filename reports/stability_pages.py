@@ -3,7 +3,7 @@ from collections import defaultdict
 
 import numpy as np
 
-from report_style import Page, number, plot_area, read_csv
+from report_style import Page, number, plot_area, read_csv, wrap_setup
 
 FOUND = ("bracketed", "stable-at-max")
 
@@ -140,21 +140,10 @@ def extremes_page(path):
                 "trapezoidal).", draw)
 
 
-def engine_label(engine, iterations, width=26):
-    """The engine's row name, wrapped at its ':' parameters so a long setup
-    (mysim:xpbd:substeps=1:iterations=10:tolerance=0) stays beside its row, not over the next panel."""
-    label = engine + (f" ({iterations} passes)" if iterations else "")
-    parts = label.split(":")
-    if len(label) <= width or len(parts) <= 2:
-        return label
-    lines, line = [], ":".join(parts[:2])
-    for part in parts[2:]:
-        if len(line) + 1 + len(part) > width:
-            lines.append(line + ":")
-            line = part
-        else:
-            line += ":" + part
-    return "\n".join(lines + [line])
+def engine_label(engine, iterations):
+    """The engine's row name, wrapped at its ':' parameters so a long setup stays beside its row,
+    not over the next panel."""
+    return wrap_setup(engine + (f" ({iterations} passes)" if iterations else ""))
 
 
 def engine_summary(rows):

@@ -6,7 +6,7 @@ from collections import defaultdict
 
 import numpy as np
 
-from report_style import Page, coincident, draw_coincidences, number, plot_area, read_csv, window_text
+from report_style import Page, coincident, draw_coincidences, number, plot_area, read_csv, window_text, wrap_setup
 
 
 def series_key(row):
@@ -36,9 +36,7 @@ def legend_outside(fig, ax):
     for old in fig.legends:
         old.remove()
     handles, labels = ax.get_legend_handles_labels()
-    # A long name (an integrator with its parameters) on two lines, so it stays on the page.
-    labels = [label.replace(":", "\n   ", 2).replace("\n   ", ":", 1) if len(label) > 26 else label
-              for label in labels]
+    labels = [wrap_setup(label, 24) for label in labels]  # a long setup on lines that stay on the page
     fig.legend(handles, labels, loc="upper left", bbox_to_anchor=(0.81, 0.88), fontsize=7.5,
                frameon=False)
 
@@ -211,7 +209,12 @@ def convergence_title(sweep):
     if not orders:
         return f"Does each method converge at its order? ({sweep['name']}: no series with two finished steps)"
     scene = os.path.basename(first).removesuffix(".json")
-    return f"Observed orders on {scene} {window_text(sweep)}: " + ", ".join(f"{n} {o:.2f}" for o, n in orders)
+    title = f"Observed orders on {scene} {window_text(sweep)}: " + ", ".join(f"{n} {o:.2f}" for o, n in orders)
+    if len(title) <= 200:
+        return title
+    # Too many series to name in a title: the span, the highest and the lowest (each line says its own).
+    return (f"Observed orders on {scene} {window_text(sweep)}: {orders[-1][0]:.2f} ({orders[-1][1]}) to "
+            f"{orders[0][0]:.2f} ({orders[0][1]}) over {len(orders)} series, each written at its finest step")
 
 
 def convergence_page(sweep):

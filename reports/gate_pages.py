@@ -10,9 +10,9 @@ from report_style import Page
 # table fills the plot area (0.22 to 0.88 of 8.27 in), about 10 pt a line at the table's 7 pt.
 MORE_PAGE_LINES = 40
 # Characters per table line at the table's 7 pt (about 4 pt a character): the reason column is
-# 0.415 and the engines column 0.16 of the table's 0.95 of an 842 pt page (the scene column 0.13: a
+# 0.40 and the engines column 0.16 of the table's 0.95 of an 842 pt page (the scene column 0.13: a
 # scene name such as capstan_three_eighths_turn whole).
-REASON_WIDTH = 82
+REASON_WIDTH = 79
 ENGINES_WIDTH = 30
 
 
@@ -79,7 +79,7 @@ def draw_gate_table(fig, rows, failed, lines, top, height):
         return
     table = ax.table(cellText=rows, colLabels=["", "scene", "engines [integrator]", "metric", "unit", "bound",
                                                "measured", "why this bound (or what went wrong)"],
-                     colWidths=[0.035, 0.13, 0.16, 0.11, 0.05, 0.045, 0.055, 0.415], loc="upper left",
+                     colWidths=[0.035, 0.13, 0.16, 0.125, 0.05, 0.045, 0.055, 0.40], loc="upper left",
                      cellLoc="left")
     table.auto_set_font_size(False)
     table.set_fontsize(7)

@@ -33,19 +33,11 @@ def oscillator_series(ratio_ax, map_ax, key, mine, kw):
     ratios = [(k, number(r["ratio"])) for k, r in mine if r["status"] == "bracketed" and number(r["ratio"])]
     if ratios:
         ratio_ax.semilogx(*zip(*ratios), label=key, **kw)
-    found = [(k, number(r["h_stable"])) for k, r in mine if r["status"] == "bracketed"]
-    capped = [(k, number(r["h_stable"])) for k, r in mine if r["status"] == "stable-at-max"]
-    if found:
-        map_ax.loglog(*zip(*found), label=key, **kw)
-    if capped:
-        map_ax.loglog(*zip(*capped), linestyle="none", marker=kw["marker"], markerfacecolor="none",
-                      markeredgecolor=kw["color"], markersize=7, label=None if found else key + " (stable)")
-    theory = [(k, number(r["theory_h"])) for k, r in mine if number(r["theory_h"])]
-    if theory:
-        map_ax.loglog(*zip(*theory), color=kw["color"], lw=0.8, linestyle=(0, (4, 3)))
+    draw_map_series(map_ax, mine, key, kw)
     if ratios:
         return None
     hw = [number(r["h_stable"]) * number(r["omega"]) for _, r in mine if r["status"] == "bracketed"]
+    capped = any(r["status"] == "stable-at-max" for _, r in mine)
     return f"{key}: " + ("stable at every step tried" if capped else
                          f"limit h w = {np.median(hw):.3g}, no theory" if hw else "no stable step")
 

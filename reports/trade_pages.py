@@ -77,6 +77,19 @@ def label_steps(ax, series, steps):
                             fontsize=6.5, color="0.3")
 
 
+# The evidence rule for an order drawn from a sweep over the step (as refine's for resolutions,
+# compare/studies/refinement.h): four steps or more; a sweep's table carries no expected order to
+# hold three to. A slope under 0.5 is no convergence at all, said in words, not as an order.
+MIN_STEPS_FOR_ORDER = 4
+CONVERGING_SLOPE = 0.5
+
+
+def evidenced_order(pts):
+    """The observed order where the series has the evidence for one, else None."""
+    order = fitted_order(pts) if len(pts) >= MIN_STEPS_FOR_ORDER else None
+    return order if order is not None and order >= CONVERGING_SLOPE else None
+
+
 def fitted_order(pts):
     """The least-squares slope of log error over log step: the observed order of convergence."""
     if len(pts) < 2:
@@ -204,10 +217,11 @@ def convergence_title(sweep):
     scale = min(number(r["stiffness_scale"]) for r in rows)
     first = rows[0]["scene"]
     series, _ = collect([r for r in rows if r["scene"] == first and number(r["stiffness_scale"]) == scale], "dt")
-    orders = sorted(((fitted_order(pts), label.removeprefix("mysim:")) for label, pts in series.items()
-                     if fitted_order(pts) is not None), reverse=True)
+    orders = sorted(((evidenced_order(pts), label.removeprefix("mysim:")) for label, pts in series.items()
+                     if evidenced_order(pts) is not None), reverse=True)
     if not orders:
-        return f"Does each method converge at its order? ({sweep['name']}: no series with two finished steps)"
+        return (f"Does each method converge at its order? ({sweep['name']}: no series with "
+                f"{MIN_STEPS_FOR_ORDER} finished steps, so no order is drawn)")
     scene = os.path.basename(first).removesuffix(".json")
     title = f"Observed orders on {scene} {window_text(sweep)}: " + ", ".join(f"{n} {o:.2f}" for o, n in orders)
     if len(title) <= 200:
@@ -215,6 +229,31 @@ def convergence_title(sweep):
     # Too many series to name in a title: the span, the highest and the lowest (each line says its own).
     return (f"Observed orders on {scene} {window_text(sweep)}: {orders[-1][0]:.2f} ({orders[-1][1]}) to "
             f"{orders[0][0]:.2f} ({orders[0][1]}) over {len(orders)} series, each written at its finest step")
+
+
+def draw_orders(ax, ctx, name, scene, series, variants):
+    """Each series' observed order at its finest step where it has the evidence (each one a claim
+    the report's check holds to the rule), "flat" where it does not converge; returns the notes."""
+    orders, short, flat = [], [], []
+    for label, pts in sorted(series.items()):
+        colour = ctx.styles.line(*variants[label])["color"]
+        order = evidenced_order(pts)
+        if len(pts) < MIN_STEPS_FOR_ORDER:
+            short.append(label)
+        elif order is None:
+            flat.append(label)
+            orders.append((pts[0], "flat", colour))
+        else:
+            orders.append((pts[0], f"{order:.2f}", colour))
+            ctx.claims.append({"page": f"convergence_{name}", "kind": "order", "engine": label,
+                               "quantity": f"error over the step ({os.path.basename(scene)})",
+                               "resolutions": " ".join(f"{p[0]:g}" for p in pts), "observed_order": f"{order}",
+                               "expected_order": "", "verdict": f"converged: observed order {order:.2f} "
+                                                                f"from {len(pts)} steps"})
+    place_order_labels(ax, orders)
+    notes = [f"No order drawn for {', '.join(short)}: fewer than {MIN_STEPS_FOR_ORDER} finished steps."] if short else []
+    return notes + ([f"'flat': {', '.join(flat)} do not converge over these steps (slope under "
+                     f"{CONVERGING_SLOPE})."] if flat else [])
 
 
 def convergence_page(sweep):
@@ -234,10 +273,7 @@ def convergence_page(sweep):
                 continue
             notes += draw_series(ax, series, variants, ctx)
             draw_precision_floors(ax, part)
-            # Each series' observed order (least-squares slope), written at its finest step.
-            orders = [(pts[0], f"{fitted_order(pts):.2f}", ctx.styles.line(*variants[label])["color"])
-                      for label, pts in series.items() if fitted_order(pts) is not None]
-            place_order_labels(ax, orders)
+            notes += draw_orders(ax, ctx, sweep["name"], scene, series, variants)
             ax.set_xlabel("step dt [s]")
             refs = sorted({r["reference"] for r in part if r.get("reference")})
             ax.set_ylabel(f"error against {', '.join(refs) or 'the reference'} [m]")
@@ -251,7 +287,8 @@ def convergence_page(sweep):
     return Page(f"convergence_{sweep['name']}", convergence_title(sweep),
                 f"Error of every finished run against {against} ({window_text(sweep)}), over the step, "
                 "log-log, at the sweep's lowest stiffness. The number left of each line's finest step is its observed order of "
-                "convergence, the least-squares slope of log error over log step (1 for Euler-type schemes, "
+                "convergence, the least-squares slope of log error over log step, drawn only from four finished "
+                "steps or more (1 for Euler-type schemes, "
                 "2 for Verlet and Heun, 4 for RK4 is the theory); a line that flattens has hit the error of "
                 "its reference or its solver tolerance, and its fitted order then reads low.", draw)
 

@@ -2,6 +2,7 @@
 import json
 import textwrap
 
+import front_page
 from report_style import Page
 
 
@@ -93,8 +94,7 @@ def draw(fig, ctx):
 
 def title(ctx):
     """The answer: how many closed forms each engine meets to 1 % (springcheck report's verdicts)."""
-    parts = [f"{v['engine']} {v['closed_forms']['trusted']}/{v['closed_forms']['scenes']}"
-             for v in ctx.manifest.get("headlines", {}).get("verdicts", []) if v.get("closed_forms")]
+    parts = front_page.trust_counts(ctx)
     return ("How far is each engine from the exact answers? Within 1 %: " + ", ".join(parts) if parts
             else "How far is each engine from the exact answers?")
 

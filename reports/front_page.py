@@ -192,10 +192,16 @@ def draw(fig, ctx):
     return []
 
 
+def trust_counts(ctx):
+    """'engine trusted/scenes' for each engine held to a closed form (springcheck report's verdicts):
+    the answer page 1 and the closed-form page both give in their titles."""
+    return [f"{v['engine']} {v['closed_forms']['trusted']}/{v['closed_forms']['scenes']}"
+            for v in ctx.manifest.get("headlines", {}).get("verdicts", []) if v.get("closed_forms")]
+
+
 def title(ctx):
     """The answer: how many closed forms each engine meets to 1 %."""
-    parts = [f"{v['engine']} {v['closed_forms']['trusted']}/{v['closed_forms']['scenes']}"
-             for v in ctx.manifest.get("headlines", {}).get("verdicts", []) if v.get("closed_forms")]
+    parts = trust_counts(ctx)
     if not parts:
         return "springcheck: do the engines agree, where do they break, what should I run?"
     return "Which engine can I trust? Closed forms met to 1 %: " + ", ".join(parts)

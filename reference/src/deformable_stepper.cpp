@@ -115,25 +115,7 @@ class DeformableStepper final : public BulletStepper {
     addContacts(model, implicit);
     world_->addSoftBody(body_.get());
 
-    // Bullet's mass-spring force where it holds the model (one stiffness for non-bending links,
-    // one for bending (flex) links, one damping; damping along the link, conserve_angular =
-    // true, as mysim's); otherwise ours, link by link.
-    const std::optional<UniformSprings> uniform = uniformSprings(model);
-    if (model.springs.empty()) {
-    } else if (uniform && !settings.force_per_link_springs) {
-      mass_spring_ = std::make_unique<btDeformableMassSpringForce>(
-          uniform->stiffness, uniform->damping, true, uniform->bending_stiffness);
-      world_->addForce(body_.get(), mass_spring_.get());
-    } else {
-      std::vector<DeformableLinkSpringForce::LinkParameters> links;
-      for (const mysim::Spring& s : model.springs) links.push_back({s.stiffness, s.damping});
-      link_springs_ = std::make_unique<DeformableLinkSpringForce>(std::move(links));
-      world_->addForce(body_.get(), link_springs_.get());
-      notes_.push_back(
-          "springs through springcheck's per-link spring force on Bullet's force interface "
-          "(the force law is ours, a stiffness and damping per link; the solver, contacts and "
-          "time stepping are Bullet's)");
-    }
+    addSprings(model, settings);
     if (!model.hinges.empty()) {
       hinges_ = std::make_unique<DeformableHingeForce>(model.hinges);
       world_->addForce(body_.get(), hinges_.get());
@@ -158,6 +140,28 @@ class DeformableStepper final : public BulletStepper {
     // One Newton step: Baraff-Witkin's linearised backward Euler, as mysim's backward-euler.
     solver_->tune(settings.cg_tolerance, settings.cg_max_iterations, 1);
     solver_->countIterations(implicit);
+  }
+
+  // Bullet's mass-spring force where it holds the model (one stiffness for non-bending links,
+  // one for bending (flex) links, one damping; damping along the link, conserve_angular =
+  // true, as mysim's); otherwise ours, link by link.
+  void addSprings(const mysim::Model& model, const BulletSettings& settings) {
+    const std::optional<UniformSprings> uniform = uniformSprings(model);
+    if (model.springs.empty()) {
+    } else if (uniform && !settings.force_per_link_springs) {
+      mass_spring_ = std::make_unique<btDeformableMassSpringForce>(
+          uniform->stiffness, uniform->damping, true, uniform->bending_stiffness);
+      world_->addForce(body_.get(), mass_spring_.get());
+    } else {
+      std::vector<DeformableLinkSpringForce::LinkParameters> links;
+      for (const mysim::Spring& s : model.springs) links.push_back({s.stiffness, s.damping});
+      link_springs_ = std::make_unique<DeformableLinkSpringForce>(std::move(links));
+      world_->addForce(body_.get(), link_springs_.get());
+      notes_.push_back(
+          "springs through springcheck's per-link spring force on Bullet's force interface "
+          "(the force law is ours, a stiffness and damping per link; the solver, contacts and "
+          "time stepping are Bullet's)");
+    }
   }
 
   // The static colliders (node contacts against their SDF, with friction) and self-collision.

@@ -142,6 +142,61 @@ struct Execution {
   double process_seconds = 0.0;
 };
 
+// The engine's command with its placeholders filled in ({python} found now, on this machine, only
+// if the command asks for it); a relative program path is the engines file's.
+std::expected<std::vector<std::string>, std::string> commandLine(const ExternalEngineSpec& spec,
+                                                                 const RunConfig& config,
+                                                                 const std::string& scratch) {
+  std::string python = "python3";
+  for (const std::string& arg : spec.command) {
+    if (arg.find("{python}") == std::string::npos) continue;
+    auto found = findPython({"numpy"});
+    if (!found) return std::unexpected("{python} in " + spec.source + ": " + found.error());
+    python = *found;
+    break;
+  }
+  const std::vector<std::pair<std::string, std::string>> values = {
+      {"{model}", scratch + "/model.json"},
+      {"{out}", scratch + "/out"},
+      {"{dir}", spec.dir},
+      {"{python}", python},
+      {"{dt}", number(config.run.dt)},
+      {"{duration}", number(config.run.duration)},
+      {"{integrator}", config.integrator.name},
+      {"{scene}", config.scene_name}};
+  std::vector<std::string> argv;
+  for (const std::string& arg : spec.command) {
+    auto substituted = substitutePlaceholders(arg, values);
+    if (!substituted) {
+      return std::unexpected("command in " + spec.source + ": " + substituted.error());
+    }
+    argv.push_back(*substituted);
+  }
+  if (argv[0].find('/') != std::string::npos && fs::path(argv[0]).is_relative()) {
+    argv[0] = (fs::path(spec.dir) / argv[0]).lexically_normal().string();
+  }
+  return argv;
+}
+
+// Why a finished engine process failed (it did not start, timed out, was killed, exited non-zero),
+// with the last lines it wrote; nothing if it exited 0.
+std::optional<std::string> processFailure(const ProcessResult& p, const ExternalEngineSpec& spec,
+                                          const std::string& log) {
+  if (!p.started || !p.error.empty()) return p.error;
+  if (p.timed_out) {
+    return "killed at its time limit of " + number(spec.time_limit) + " s (time_limit in " +
+           spec.source + "); it said last:" + lastLines(log, 5);
+  }
+  if (p.signal != 0) {
+    return "ended by signal " + std::to_string(p.signal) + "; it said last:" + lastLines(log, 5);
+  }
+  if (p.exit_code != 0) {
+    return "exited with code " + std::to_string(p.exit_code) + "; it said last:" +
+           lastLines(log, 5);
+  }
+  return std::nullopt;
+}
+
 // Writes the model, runs the program, reads back and checks what it wrote.
 std::expected<Execution, EngineError> execute(const ExternalEngineSpec& spec,
                                               const mysim::Model& model, const RunConfig& config,
@@ -165,53 +220,12 @@ std::expected<Execution, EngineError> execute(const ExternalEngineSpec& spec,
   if (auto written = writeModelFile(scratch.path(), model, config, run.plan); !written) {
     return std::unexpected(failed(who + ": " + written.error()));
   }
-  // {python}: found now, on this machine, only if the command asks for it.
-  std::string python = "python3";
-  for (const std::string& arg : spec.command) {
-    if (arg.find("{python}") == std::string::npos) continue;
-    auto found = findPython({"numpy"});
-    if (!found) return std::unexpected(failed(who + ": {python} in " + spec.source + ": " + found.error()));
-    python = *found;
-    break;
-  }
-  const std::vector<std::pair<std::string, std::string>> values = {
-      {"{model}", scratch.path() + "/model.json"},
-      {"{out}", out},
-      {"{dir}", spec.dir},
-      {"{python}", python},
-      {"{dt}", number(config.run.dt)},
-      {"{duration}", number(config.run.duration)},
-      {"{integrator}", config.integrator.name},
-      {"{scene}", config.scene_name}};
-  std::vector<std::string> argv;
-  for (const std::string& arg : spec.command) {
-    auto substituted = substitutePlaceholders(arg, values);
-    if (!substituted) {
-      return std::unexpected(failed(who + ": command in " + spec.source + ": " + substituted.error()));
-    }
-    argv.push_back(*substituted);
-  }
-  // A relative program path is the engines file's, not the working folder's.
-  if (argv[0].find('/') != std::string::npos && fs::path(argv[0]).is_relative()) {
-    argv[0] = (fs::path(spec.dir) / argv[0]).lexically_normal().string();
-  }
+  auto argv = commandLine(spec, config, scratch.path());
+  if (!argv) return std::unexpected(failed(who + ": " + argv.error()));
   const std::string log = scratch.path() + "/engine.log";
-  const ProcessResult p = runProcess(argv, log, spec.time_limit);
+  const ProcessResult p = runProcess(*argv, log, spec.time_limit);
   run.process_seconds = p.wall_seconds;
-  if (!p.started || !p.error.empty()) return std::unexpected(failed(who + ": " + p.error));
-  if (p.timed_out) {
-    return std::unexpected(failed(who + ": killed at its time limit of " + number(spec.time_limit) +
-                                  " s (time_limit in " + spec.source +
-                                  "); it said last:" + lastLines(log, 5)));
-  }
-  if (p.signal != 0) {
-    return std::unexpected(failed(who + ": ended by signal " + std::to_string(p.signal) +
-                                  "; it said last:" + lastLines(log, 5)));
-  }
-  if (p.exit_code != 0) {
-    return std::unexpected(failed(who + ": exited with code " + std::to_string(p.exit_code) +
-                                  "; it said last:" + lastLines(log, 5)));
-  }
+  if (auto why = processFailure(p, spec, log)) return std::unexpected(failed(who + ": " + *why));
   const int particles = model.isCircle() ? 2 : model.particleCount();
   auto result = readExternalResult(spec.name, out, particles, run.plan, config.run.dt);
   if (!result) return std::unexpected(failed(result.error()));

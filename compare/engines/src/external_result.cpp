@@ -79,6 +79,195 @@ std::optional<std::string> nonFiniteFrames(ExternalResult& result, const std::ve
   return std::nullopt;
 }
 
+// What is wrong with an engine's output, and in which file.
+struct Wrong {
+  std::string file, why;
+};
+std::unexpected<Wrong> wrong(std::string file, std::string why) {
+  return std::unexpected(Wrong{std::move(file), std::move(why)});
+}
+std::string afterPath(const std::string& error) { return error.substr(error.find(": ") + 2); }
+
+// summary.json's optional counts: wall_seconds and derivative_evaluations.
+std::optional<std::string> readSummaryCounts(const json& s, ExternalResult& result) {
+  if (s.contains("wall_seconds")) {
+    if (!s["wall_seconds"].is_number() || !(s["wall_seconds"].get<double>() >= 0) ||
+        !std::isfinite(s["wall_seconds"].get<double>())) {
+      return "wall_seconds: expected a number of seconds >= 0";
+    }
+    result.wall_seconds = s["wall_seconds"].get<double>();
+  }
+  if (s.contains("derivative_evaluations")) {
+    // A count: an integer from 0 to 2^53 (a double's exact integers; -5 or 2^64-1 is a bug).
+    const json& d = s["derivative_evaluations"];
+    constexpr long kLargest = 1L << 53;
+    if (!d.is_number_integer() || (d.is_number_unsigned() && d.get<unsigned long>() > kLargest) ||
+        (!d.is_number_unsigned() && (d.get<long>() < 0 || d.get<long>() > kLargest))) {
+      return "derivative_evaluations: expected an integer from 0 to 2^53, got " +
+             mysim::clip(d.dump(), 40);
+    }
+    result.derivative_evaluations = d.get<long>();
+  }
+  return std::nullopt;
+}
+
+// summary.json's blowup: null or {"time": s within the run, "reason": text}.
+std::optional<std::string> readSummaryBlowup(const json& s, const FramePlan& plan,
+                                             ExternalResult& result) {
+  if (!s.contains("blowup") || s["blowup"].is_null()) return std::nullopt;
+  const json& b = s["blowup"];
+  if (!b.is_object() || !b.contains("time") || !b["time"].is_number()) {
+    return "blowup: expected null or {\"time\": s, \"reason\": text}";
+  }
+  // Within the run: from its start to its last frame time (the duration).
+  const double t = b["time"].get<double>();
+  if (!std::isfinite(t) || t < 0.0 || t > plan.times.back() + 1e-9 * std::max(1.0, plan.times.back())) {
+    std::ostringstream m;
+    m.precision(12);
+    m << "blowup.time: expected a time within the run, 0 to " << plan.times.back() << " s, got " << t;
+    return m.str();
+  }
+  result.blowup_time = t;
+  if (b.contains("reason") && b["reason"].is_string()) {
+    result.blowup_reason = b["reason"].get<std::string>();
+  }
+  return std::nullopt;
+}
+
+// summary.json, when present, first: it may declare a blow-up, which allows a shorter run.
+std::optional<std::string> readSummary(const fs::path& file, const FramePlan& plan,
+                                       ExternalResult& result) {
+  std::ifstream in(file);
+  json s;
+  try {
+    s = json::parse(in);
+  } catch (const json::exception& e) {
+    return std::string("not valid JSON: ") + e.what();
+  }
+  if (!s.is_object()) return "expected an object";
+  result.summary_present = true;
+  if (auto why = readSummaryCounts(s, result)) return why;
+  return readSummaryBlowup(s, plan, result);
+}
+
+std::expected<std::vector<double>, Wrong> readTimes(const fs::path& dir) {
+  std::vector<double> times;
+  if (fs::is_regular_file(dir / "times.npy")) {
+    auto a = readNpy((dir / "times.npy").string());
+    if (!a) return wrong("times.npy", afterPath(a.error()));
+    if (a->shape.size() != 1) return wrong("times.npy", "expected shape (frames,)");
+    return a->data;
+  }
+  if (fs::is_regular_file(dir / "times.csv")) {
+    auto rows = readNumberCsv((dir / "times.csv").string(), 1);
+    if (!rows) return wrong("times.csv", afterPath(rows.error()));
+    for (const auto& row : *rows) times.push_back(row[0]);
+    return times;
+  }
+  return wrong("times.npy", "missing (the engine wrote neither times.npy nor times.csv)");
+}
+
+std::expected<std::vector<double>, Wrong> readTrajectoryNpy(const fs::path& file, int particles,
+                                                           std::size_t frames) {
+  auto a = readNpy(file.string());
+  if (!a) return wrong("trajectory.npy", afterPath(a.error()));
+  if (a->shape.size() != 3 || a->shape[2] != 6) {
+    return wrong("trajectory.npy", "expected shape (frames, particles, 6)");
+  }
+  if (a->shape[1] != particles) {
+    return wrong("trajectory.npy", std::to_string(a->shape[1]) + " particles, the model has " +
+                                       std::to_string(particles));
+  }
+  if (static_cast<std::size_t>(a->shape[0]) != frames) {
+    return wrong("trajectory.npy",
+                 std::to_string(a->shape[0]) + " frames, times has " + std::to_string(frames));
+  }
+  return std::move(a->data);
+}
+
+std::expected<std::vector<double>, Wrong> readTrajectoryCsv(const fs::path& file, int particles,
+                                                           std::size_t frames) {
+  auto rows = readNumberCsv(file.string(), 8);
+  if (!rows) return wrong("trajectory.csv", afterPath(rows.error()));
+  if (rows->size() != frames * particles) {
+    return wrong("trajectory.csv", std::to_string(rows->size()) +
+                                       " rows, expected frames x particles = " +
+                                       std::to_string(frames * particles));
+  }
+  std::vector<double> data(rows->size() * 6);
+  for (std::size_t r = 0; r < rows->size(); ++r) {
+    const auto& row = (*rows)[r];
+    if (row[0] != static_cast<double>(r / particles) ||
+        row[1] != static_cast<double>(r % particles)) {
+      return wrong("trajectory.csv", "row " + std::to_string(r + 1) + ": expected frame " +
+                                         std::to_string(r / particles) + ", particle " +
+                                         std::to_string(r % particles) +
+                                         " (rows in frame, then particle order)");
+    }
+    for (int k = 0; k < 6; ++k) data[r * 6 + k] = row[2 + k];
+  }
+  return data;
+}
+
+// Frame times: the ones asked for; fewer only up to a declared blow-up.
+std::optional<Wrong> checkFrameTimes(const ExternalResult& result, const FramePlan& plan,
+                                     double dt, const std::string& times_file) {
+  const std::size_t frames = result.times.size();
+  if (frames == 0) return Wrong{"times", "no frames"};
+  if (frames > plan.times.size()) {
+    return Wrong{"times", std::to_string(frames) + " frames, " + std::to_string(plan.times.size()) +
+                              " were asked for"};
+  }
+  for (std::size_t f = 0; f < frames; ++f) {
+    if (!std::isfinite(result.times[f]) ||
+        std::abs(result.times[f] - plan.times[f]) > 1e-6 * dt + 1e-12) {
+      std::ostringstream m;
+      m.precision(12);
+      m << "frame " << f << " at t = " << result.times[f] << " s, expected " << plan.times[f]
+        << " s (model.json frame_times)";
+      return Wrong{times_file, m.str()};
+    }
+  }
+  if (frames == plan.times.size() && result.blowup_time) {
+    return Wrong{"summary.json", "declares a blow-up at t = " + std::to_string(*result.blowup_time) +
+                                     " s but every frame was returned: either the run ended early "
+                                     "(return the frames up to the blow-up) or it did not blow up "
+                                     "(\"blowup\": null)"};
+  }
+  if (frames < plan.times.size() && !result.blowup_time) {
+    return Wrong{"times", std::to_string(frames) + " of " + std::to_string(plan.times.size()) +
+                              " frames, and summary.json declares no blow-up: the run is "
+                              "incomplete"};
+  }
+  return std::nullopt;
+}
+
+// Times, then every frame, checked whole; on return, result's times and frames are the run's.
+std::optional<Wrong> readFrames(const fs::path& dir, int particles, const FramePlan& plan,
+                                double dt, ExternalResult& result) {
+  auto times = readTimes(dir);
+  if (!times) return times.error();
+  result.times = std::move(*times);
+  std::size_t frames = result.times.size();
+  const bool npy = fs::is_regular_file(dir / "trajectory.npy");
+  if (!npy && !fs::is_regular_file(dir / "trajectory.csv")) {
+    return Wrong{"trajectory.npy", "missing (the engine wrote neither trajectory.npy nor trajectory.csv)"};
+  }
+  const std::string trajectory_file = npy ? "trajectory.npy" : "trajectory.csv";
+  auto data = npy ? readTrajectoryNpy(dir / trajectory_file, particles, frames)
+                  : readTrajectoryCsv(dir / trajectory_file, particles, frames);
+  if (!data) return data.error();
+  const bool times_npy = fs::is_regular_file(dir / "times.npy");
+  if (auto why = checkFrameTimes(result, plan, dt, times_npy ? "times.npy" : "times.csv")) return why;
+  if (auto why = nonFiniteFrames(result, *data, frames, particles)) return Wrong{trajectory_file, *why};
+  result.frames.resize(frames);
+  for (std::size_t f = 0; f < frames; ++f) {
+    result.frames[f] = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor>>(
+        data->data() + f * 6 * particles, particles, 6);
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::expected<ExternalResult, std::string> readExternalResult(const std::string& engine,
@@ -89,151 +278,11 @@ std::expected<ExternalResult, std::string> readExternalResult(const std::string&
   auto bad = [&](const std::string& file, const std::string& why) {
     return std::unexpected("engine '" + engine + "': " + file + ": " + why);
   };
-  auto present = [&](const char* name) { return fs::is_regular_file(dir / name); };
   ExternalResult result;
-
-  // summary.json first: it may declare a blow-up, which allows a shorter run.
-  if (present("summary.json")) {
-    std::ifstream in(dir / "summary.json");
-    json s;
-    try {
-      s = json::parse(in);
-    } catch (const json::exception& e) {
-      return bad("summary.json", std::string("not valid JSON: ") + e.what());
-    }
-    if (!s.is_object()) return bad("summary.json", "expected an object");
-    result.summary_present = true;
-    if (s.contains("wall_seconds")) {
-      if (!s["wall_seconds"].is_number() || !(s["wall_seconds"].get<double>() >= 0) ||
-          !std::isfinite(s["wall_seconds"].get<double>())) {
-        return bad("summary.json", "wall_seconds: expected a number of seconds >= 0");
-      }
-      result.wall_seconds = s["wall_seconds"].get<double>();
-    }
-    if (s.contains("derivative_evaluations")) {
-      // A count: an integer from 0 to 2^53 (a double's exact integers; -5 or 2^64-1 is a bug).
-      const json& d = s["derivative_evaluations"];
-      constexpr long kLargest = 1L << 53;
-      if (!d.is_number_integer() || (d.is_number_unsigned() && d.get<unsigned long>() > kLargest) ||
-          (!d.is_number_unsigned() && (d.get<long>() < 0 || d.get<long>() > kLargest))) {
-        return bad("summary.json", "derivative_evaluations: expected an integer from 0 to 2^53, got " +
-                                       mysim::clip(d.dump(), 40));
-      }
-      result.derivative_evaluations = d.get<long>();
-    }
-    if (s.contains("blowup") && !s["blowup"].is_null()) {
-      const json& b = s["blowup"];
-      if (!b.is_object() || !b.contains("time") || !b["time"].is_number()) {
-        return bad("summary.json", "blowup: expected null or {\"time\": s, \"reason\": text}");
-      }
-      // Within the run: from its start to its last frame time (the duration).
-      const double t = b["time"].get<double>();
-      if (!std::isfinite(t) || t < 0.0 || t > plan.times.back() + 1e-9 * std::max(1.0, plan.times.back())) {
-        std::ostringstream m;
-        m.precision(12);
-        m << "blowup.time: expected a time within the run, 0 to " << plan.times.back() << " s, got " << t;
-        return bad("summary.json", m.str());
-      }
-      result.blowup_time = t;
-      if (b.contains("reason") && b["reason"].is_string()) {
-        result.blowup_reason = b["reason"].get<std::string>();
-      }
-    }
+  if (fs::is_regular_file(dir / "summary.json")) {
+    if (auto why = readSummary(dir / "summary.json", plan, result)) return bad("summary.json", *why);
   }
-
-  // Times.
-  if (present("times.npy")) {
-    auto a = readNpy((dir / "times.npy").string());
-    if (!a) return bad("times.npy", a.error().substr(a.error().find(": ") + 2));
-    if (a->shape.size() != 1) return bad("times.npy", "expected shape (frames,)");
-    result.times = a->data;
-  } else if (present("times.csv")) {
-    auto rows = readNumberCsv((dir / "times.csv").string(), 1);
-    if (!rows) return bad("times.csv", rows.error().substr(rows.error().find(": ") + 2));
-    for (const auto& row : *rows) result.times.push_back(row[0]);
-  } else {
-    return bad("times.npy", "missing (the engine wrote neither times.npy nor times.csv)");
-  }
-
-  // Frames.
-  std::size_t frames = result.times.size();
-  std::vector<double> data;
-  std::string trajectory_file = "trajectory.npy";
-  if (present("trajectory.npy")) {
-    auto a = readNpy((dir / "trajectory.npy").string());
-    if (!a) return bad("trajectory.npy", a.error().substr(a.error().find(": ") + 2));
-    if (a->shape.size() != 3 || a->shape[2] != 6) {
-      return bad("trajectory.npy", "expected shape (frames, particles, 6)");
-    }
-    if (a->shape[1] != particles) {
-      return bad("trajectory.npy", std::to_string(a->shape[1]) + " particles, the model has " +
-                                       std::to_string(particles));
-    }
-    if (static_cast<std::size_t>(a->shape[0]) != frames) {
-      return bad("trajectory.npy",
-                 std::to_string(a->shape[0]) + " frames, times has " + std::to_string(frames));
-    }
-    data = std::move(a->data);
-  } else if (present("trajectory.csv")) {
-    trajectory_file = "trajectory.csv";
-    auto rows = readNumberCsv((dir / "trajectory.csv").string(), 8);
-    if (!rows) return bad("trajectory.csv", rows.error().substr(rows.error().find(": ") + 2));
-    if (rows->size() != frames * particles) {
-      return bad("trajectory.csv", std::to_string(rows->size()) +
-                                       " rows, expected frames x "
-                                       "particles = " +
-                                       std::to_string(frames * particles));
-    }
-    data.resize(rows->size() * 6);
-    for (std::size_t r = 0; r < rows->size(); ++r) {
-      const auto& row = (*rows)[r];
-      if (row[0] != static_cast<double>(r / particles) ||
-          row[1] != static_cast<double>(r % particles)) {
-        return bad("trajectory.csv", "row " + std::to_string(r + 1) + ": expected frame " +
-                                         std::to_string(r / particles) + ", particle " +
-                                         std::to_string(r % particles) +
-                                         " (rows in frame, then particle order)");
-      }
-      for (int k = 0; k < 6; ++k) data[r * 6 + k] = row[2 + k];
-    }
-  } else {
-    return bad("trajectory.npy",
-               "missing (the engine wrote neither trajectory.npy nor trajectory.csv)");
-  }
-
-  // Frame times: the ones asked for; fewer only up to a declared blow-up.
-  if (frames == 0) return bad("times", "no frames");
-  if (frames > plan.times.size()) {
-    return bad("times", std::to_string(frames) + " frames, " + std::to_string(plan.times.size()) +
-                            " were asked for");
-  }
-  for (std::size_t f = 0; f < frames; ++f) {
-    if (!std::isfinite(result.times[f]) ||
-        std::abs(result.times[f] - plan.times[f]) > 1e-6 * dt + 1e-12) {
-      std::ostringstream m;
-      m.precision(12);
-      m << "frame " << f << " at t = " << result.times[f] << " s, expected " << plan.times[f]
-        << " s (model.json frame_times)";
-      return bad(present("times.npy") ? "times.npy" : "times.csv", m.str());
-    }
-  }
-  if (frames == plan.times.size() && result.blowup_time) {
-    return bad("summary.json", "declares a blow-up at t = " + std::to_string(*result.blowup_time) +
-                                   " s but every frame was returned: either the run ended early "
-                                   "(return the frames up to the blow-up) or it did not blow up "
-                                   "(\"blowup\": null)");
-  }
-  if (frames < plan.times.size() && !result.blowup_time) {
-    return bad("times", std::to_string(frames) + " of " + std::to_string(plan.times.size()) +
-                            " frames, and summary.json declares no blow-up: the run is "
-                            "incomplete");
-  }
-  if (auto why = nonFiniteFrames(result, data, frames, particles)) return bad(trajectory_file, *why);
-  result.frames.resize(frames);
-  for (std::size_t f = 0; f < frames; ++f) {
-    result.frames[f] = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor>>(
-        data.data() + f * 6 * particles, particles, 6);
-  }
+  if (auto why = readFrames(dir, particles, plan, dt, result)) return bad(why->file, why->why);
   return result;
 }
 

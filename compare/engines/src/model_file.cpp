@@ -63,6 +63,72 @@ void describeContacts(const mysim::Model& model, json& j) {
   }
 }
 
+json describeParticles(const mysim::Model& model, const mysim::State& start) {
+  const int n = model.particleCount();
+  json particles = {{"count", n},
+                    {"position", rows3(start.y.head(3 * n))},
+                    {"velocity", rows3(start.y.tail(3 * n))},
+                    {"mass", std::vector<double>(model.mass.data(), model.mass.data() + n)},
+                    {"pinned", json::array()}};
+  for (char pinned : model.pinned) particles["pinned"].push_back(pinned != 0);
+  return particles;
+}
+
+json describeSprings(const mysim::Model& model) {
+  json springs = {{"count", model.springs.size()}};
+  for (const char* key : {"i", "j", "rest_length", "stiffness", "damping", "family"}) {
+    springs[key] = json::array();
+  }
+  for (const mysim::Spring& s : model.springs) {
+    springs["i"].push_back(s.i);
+    springs["j"].push_back(s.j);
+    springs["rest_length"].push_back(s.rest_length);
+    springs["stiffness"].push_back(s.stiffness);
+    springs["damping"].push_back(s.damping);
+    springs["family"].push_back(mysim::familyName(s.family));
+  }
+  return springs;
+}
+
+// Hinges (mysim/hinge.h): b = sum_a weight[a] x[particles[a]], E = 1/2 stiffness |b|^2, flat
+// at rest (rest_angle 0 for every one: the quadratic model bends about a flat rest state).
+json describeHinges(const mysim::Model& model) {
+  json hinges = {{"count", model.hinges.size()},
+                 {"particles", json::array()},
+                 {"weights", json::array()},
+                 {"stiffness", json::array()},
+                 {"rest_angle", json::array()}};
+  for (const mysim::Hinge& h : model.hinges) {
+    hinges["particles"].push_back(h.particle);
+    hinges["weights"].push_back(h.weight);
+    hinges["stiffness"].push_back(h.stiffness);
+    hinges["rest_angle"].push_back(0.0);
+  }
+  return hinges;
+}
+
+// The wind's force table (wind.npy) and its description in j["wind"].
+std::expected<void, std::string> writeWindTable(const std::string& dir, const mysim::Model& model,
+                                                double duration, json& j) {
+  const int n = model.particleCount();
+  const mysim::Wind& w = *model.wind;
+  // The force on particle p in gust window floor(t / gust_period) is
+  // table[window, p] * direction: the same hash mysim evaluates, tabulated.
+  const long windows = static_cast<long>(std::floor(duration / w.gust_period)) + 2;
+  j["wind"] = {{"direction", vec3(w.direction)}, {"strength", w.strength}, {"gust", w.gust},
+               {"gust_period", w.gust_period},   {"coverage", w.coverage}, {"seed", w.seed},
+               {"force_table", "wind.npy"},      {"windows", windows}};
+  std::vector<double> table(static_cast<std::size_t>(windows) * n);
+  for (long k = 0; k < windows; ++k) {
+    // The middle of the window, so no rounding of k * period can land in the next one.
+    const double t = (static_cast<double>(k) + 0.5) * w.gust_period;
+    for (int p = 0; p < n; ++p) {
+      table[k * n + p] = model.pinned[p] ? 0.0 : mysim::windForce(w, p, t).dot(w.direction);
+    }
+  }
+  return writeNpy((fs::path(dir) / "wind.npy").string(), {windows, n}, table);
+}
+
 }  // namespace
 
 FramePlan framePlan(const mysim::RunSettings& settings, bool every_step) {
@@ -83,42 +149,10 @@ FramePlan framePlan(const mysim::RunSettings& settings, bool every_step) {
 std::expected<void, std::string> writeModelFile(const std::string& dir, const mysim::Model& given,
                                                 const RunConfig& config, const FramePlan& frames) {
   const mysim::Model model = given.isCircle() ? mysim::circleTwin(given) : given;
-  const int n = model.particleCount();
   // The start state as mysim starts from it: the after-step rule applied once at t = 0 (pinned
   // particles carry their prescribed velocity, contacts resolved), so an engine that simply
   // starts from the file starts where mysim does.
   const mysim::State start = mysim::ParticleSystem(model, {}).initialState();
-  json particles = {{"count", n},
-                    {"position", rows3(start.y.head(3 * n))},
-                    {"velocity", rows3(start.y.tail(3 * n))},
-                    {"mass", std::vector<double>(model.mass.data(), model.mass.data() + n)},
-                    {"pinned", json::array()}};
-  for (char pinned : model.pinned) particles["pinned"].push_back(pinned != 0);
-  json springs = {{"count", model.springs.size()}};
-  for (const char* key : {"i", "j", "rest_length", "stiffness", "damping", "family"}) {
-    springs[key] = json::array();
-  }
-  for (const mysim::Spring& s : model.springs) {
-    springs["i"].push_back(s.i);
-    springs["j"].push_back(s.j);
-    springs["rest_length"].push_back(s.rest_length);
-    springs["stiffness"].push_back(s.stiffness);
-    springs["damping"].push_back(s.damping);
-    springs["family"].push_back(mysim::familyName(s.family));
-  }
-  // Hinges (mysim/hinge.h): b = sum_a weight[a] x[particles[a]], E = 1/2 stiffness |b|^2, flat
-  // at rest (rest_angle 0 for every one: the quadratic model bends about a flat rest state).
-  json hinges = {{"count", model.hinges.size()},
-                 {"particles", json::array()},
-                 {"weights", json::array()},
-                 {"stiffness", json::array()},
-                 {"rest_angle", json::array()}};
-  for (const mysim::Hinge& h : model.hinges) {
-    hinges["particles"].push_back(h.particle);
-    hinges["weights"].push_back(h.weight);
-    hinges["stiffness"].push_back(h.stiffness);
-    hinges["rest_angle"].push_back(0.0);
-  }
   // A cloth's triangles (its grid's or its mesh's), for engines that draw or collide surfaces.
   json triangles = json::array();
   for (const Eigen::Vector3i& t : mysim::clothTriangles(model)) triangles.push_back({t[0], t[1], t[2]});
@@ -130,9 +164,9 @@ std::expected<void, std::string> writeModelFile(const std::string& dir, const my
             {"source", config.source},
             {"system", given.isCircle() ? "circle (as its mechanical twin)"
                                         : mysim::systemKindName(given.kind)},
-            {"particles", particles},
-            {"springs", springs},
-            {"hinges", hinges},
+            {"particles", describeParticles(model, start)},
+            {"springs", describeSprings(model)},
+            {"hinges", describeHinges(model)},
             {"triangles", triangles},
             {"gravity", vec3(model.gravity)},
             {"drag", model.drag},
@@ -155,25 +189,7 @@ std::expected<void, std::string> writeModelFile(const std::string& dir, const my
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (model.wind) {
-    const mysim::Wind& w = *model.wind;
-    // The force on particle p in gust window floor(t / gust_period) is
-    // table[window, p] * direction: the same hash mysim evaluates, tabulated.
-    const long windows = static_cast<long>(std::floor(config.run.duration / w.gust_period)) + 2;
-    j["wind"] = {{"direction", vec3(w.direction)}, {"strength", w.strength}, {"gust", w.gust},
-                 {"gust_period", w.gust_period},   {"coverage", w.coverage}, {"seed", w.seed},
-                 {"force_table", "wind.npy"},      {"windows", windows}};
-    std::vector<double> table(static_cast<std::size_t>(windows) * n);
-    for (long k = 0; k < windows; ++k) {
-      // The middle of the window, so no rounding of k * period can land in the next one.
-      const double t = (static_cast<double>(k) + 0.5) * w.gust_period;
-      for (int p = 0; p < n; ++p) {
-        table[k * n + p] = model.pinned[p] ? 0.0 : mysim::windForce(w, p, t).dot(w.direction);
-      }
-    }
-    if (auto written = writeNpy((fs::path(dir) / "wind.npy").string(), {windows, n}, table);
-        !written) {
-      return written;
-    }
+    if (auto written = writeWindTable(dir, model, config.run.duration, j); !written) return written;
   }
   return writeFileAtomically((fs::path(dir) / "model.json").string(),
                              [&](std::ostream& out) { out << jsonText(j, 1) << '\n'; });

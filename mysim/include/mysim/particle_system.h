@@ -74,6 +74,9 @@ class ParticleSystem final : public OdeSystem {
   // in the same pass.
   void gather(double t, Eigen::Ref<const Vector> x, Eigen::Ref<const Vector> v,
               Eigen::Ref<Vector> out, bool accelerations) const;
+  // Particle p's force: its external force, then its springs (from their scales) and hinges
+  // (from their k b) in the adjacencies' fixed order.
+  Vec3 particleForce(int p, double t, const double* xs, const double* vs) const;
 
   Model model_;
   BlowUpLimits limits_;

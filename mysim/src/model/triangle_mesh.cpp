@@ -6,6 +6,7 @@
 #include <map>
 #include <set>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
 namespace mysim {
@@ -72,6 +73,33 @@ std::string lineList(const std::vector<int>& lines) {
   return text;
 }
 
+// One 'f' line: its corners' vertex indices (1-based, or negative: relative to the vertices read
+// so far), fanned into triangles. What is wrong with it, if anything.
+std::optional<std::string> readFace(std::istringstream& words, int number, TriangleMesh& mesh) {
+  std::vector<int> face;
+  for (std::string corner; words >> corner;) {
+    long index = 0;
+    try {
+      index = std::stol(corner.substr(0, corner.find('/')));
+    } catch (...) {
+      return "expected a vertex index in face corner '" + corner + "'";
+    }
+    const long count = static_cast<long>(mesh.vertices.size());
+    if (index < 0) index += count + 1;  // relative to the vertices read so far
+    if (index < 1 || index > count) {
+      return "face index " + corner + " names no vertex read so far (1.." + std::to_string(count) +
+             ")";
+    }
+    face.push_back(static_cast<int>(index - 1));
+  }
+  if (face.size() < 3) return "expected a face of three or more vertices";
+  for (std::size_t k = 1; k + 1 < face.size(); ++k) {
+    mesh.triangles.emplace_back(face[0], face[k], face[k + 1]);
+    mesh.lines.push_back(number);
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::expected<TriangleMesh, std::string> readObjMesh(const std::string& path) {
@@ -106,27 +134,7 @@ std::expected<TriangleMesh, std::string> readObjMesh(const std::string& path) {
       }
       mesh.vertices.push_back(v);
     } else if (tag == "f") {
-      std::vector<int> face;
-      for (std::string corner; words >> corner;) {
-        long index = 0;
-        try {
-          index = std::stol(corner.substr(0, corner.find('/')));
-        } catch (...) {
-          return fail("expected a vertex index in face corner '" + corner + "'");
-        }
-        const long count = static_cast<long>(mesh.vertices.size());
-        if (index < 0) index += count + 1;  // relative to the vertices read so far
-        if (index < 1 || index > count) {
-          return fail("face index " + corner + " names no vertex read so far (1.." +
-                      std::to_string(count) + ")");
-        }
-        face.push_back(static_cast<int>(index - 1));
-      }
-      if (face.size() < 3) return fail("expected a face of three or more vertices");
-      for (std::size_t k = 1; k + 1 < face.size(); ++k) {
-        mesh.triangles.emplace_back(face[0], face[k], face[k + 1]);
-        mesh.lines.push_back(number);
-      }
+      if (auto wrong = readFace(words, number, mesh)) return fail(*wrong);
     } else if (!ignoredObjStatement(tag)) {
       unknown[clip(tag, 20)].push_back(number);
     }

@@ -176,6 +176,33 @@ ClothMaterial readClothMaterial(FieldReader& r, bool mesh) {
   return m;
 }
 
+// system.mesh: {"obj": FILE} (beside the scene file unless absolute) or {"shape": "disc", "radius"}
+// with system.resolution rings.
+TriangleMesh readClothTriangles(FieldReader& system, const std::string& source) {
+  FieldReader mesh = system.object("mesh");
+  TriangleMesh triangles;
+  if (mesh.has("obj")) {
+    if (system.has("resolution")) {
+      throw FieldError{system.field("resolution"), "not with mesh.obj: the file is its resolution"};
+    }
+    std::string file = mesh.text("obj");
+    if (!file.empty() && file[0] != '/') {
+      const std::size_t slash = source.find_last_of('/');
+      if (slash != std::string::npos) file = source.substr(0, slash + 1) + file;
+    }
+    auto read = readObjMesh(file);
+    if (!read) throw FieldError{mesh.field("obj"), read.error()};
+    triangles = std::move(*read);
+  } else {
+    const std::string shape = mesh.text("shape");
+    if (shape != "disc") failField(mesh.field("shape"), "\"disc\" (or give \"obj\")", mesh.raw("shape"));
+    const double radius = mesh.positive("radius");
+    triangles = discMesh(radius, static_cast<int>(system.integer("resolution", 1, 500)));
+  }
+  mesh.refuseUnknown("docs/materials.md");
+  return triangles;
+}
+
 // A cloth from a triangle mesh and its material (mesh_cloth.h): "mesh" is {"shape": "disc",
 // "radius"} (resolution: its rings) or {"obj": FILE} (beside the scene file unless absolute; its
 // own resolution); "pins" may also be {"within": R}, every vertex within R of the origin.
@@ -196,28 +223,7 @@ void readMeshCloth(FieldReader& system, Scene& scene) {
     throw FieldError{system.field("material") + ".bending.model",
                      "\"hinge\" for a mesh cloth (flex springs join grid nodes two apart)"};
   }
-  FieldReader mesh = system.object("mesh");
-  TriangleMesh triangles;
-  if (mesh.has("obj")) {
-    if (system.has("resolution")) {
-      throw FieldError{system.field("resolution"), "not with mesh.obj: the file is its resolution"};
-    }
-    std::string file = mesh.text("obj");
-    if (!file.empty() && file[0] != '/') {
-      const std::size_t slash = scene.source.find_last_of('/');
-      if (slash != std::string::npos) file = scene.source.substr(0, slash + 1) + file;
-    }
-    auto read = readObjMesh(file);
-    if (!read) throw FieldError{mesh.field("obj"), read.error()};
-    triangles = std::move(*read);
-  } else {
-    const std::string shape = mesh.text("shape");
-    if (shape != "disc") failField(mesh.field("shape"), "\"disc\" (or give \"obj\")", mesh.raw("shape"));
-    const double radius = mesh.positive("radius");
-    triangles = discMesh(radius, static_cast<int>(system.integer("resolution", 1, 500)));
-  }
-  mesh.refuseUnknown("docs/materials.md");
-  scene.cloth_mesh = std::move(triangles);
+  scene.cloth_mesh = readClothTriangles(system, scene.source);
   const Vec3 origin = system.vec3("origin", Vec3::Zero());
   scene.cloth.origin = origin;
   // Built once here, so a mesh that cannot be a cloth is refused with the scene.

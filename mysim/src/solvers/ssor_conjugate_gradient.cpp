@@ -5,6 +5,22 @@
 
 namespace mysim {
 
+namespace {
+
+// ap = F^-1 A F^-T p, the transformed system's product by Eisenstat's trick: with t = F^-T p,
+// F^-1 A F^-T p = t + F^-1 (p + K t), two triangular sweeps and a diagonal scaling, no product.
+// t and q are workspace.
+void transformedProduct(const SpringBlockMatrix& A, const Vector& p, double k_scale, Vector& t,
+                        Vector& q, Vector& ap) {
+  A.solveUpper(p, t);
+  A.multiplyDiagonal(t, q, k_scale);
+  q += p;
+  A.solveLower(q, ap);
+  ap += t;
+}
+
+}  // namespace
+
 CgResult ssorConjugateGradient(const SpringBlockMatrix& A, const Vector& b, Vector& x,
                                double tolerance, int max_iterations) {
   const double w = A.ssorOmega();
@@ -40,11 +56,7 @@ CgResult ssorConjugateGradient(const SpringBlockMatrix& A, const Vector& b, Vect
   p = z;
   double rz = deterministicDot(r_hat, z);
   for (int k = 1; k <= max_iterations; ++k) {
-    A.solveUpper(p, t);
-    A.multiplyDiagonal(t, q, k_scale);
-    q += p;
-    A.solveLower(q, ap);
-    ap += t;
+    transformedProduct(A, p, k_scale, t, q, ap);
     const double pAp = deterministicDot(p, ap);
     if (!(pAp > 0.0)) break;  // breakdown (not positive definite, or no progress left)
     const double alpha = rz / pAp;

@@ -80,6 +80,32 @@ Vec3 ParticleSystem::externalForce(int p, double t, const double* v) const {
   return f;
 }
 
+Vec3 ParticleSystem::particleForce(int p, double t, const double* xs, const double* vs) const {
+  const SpringAdjacency& a = adjacency_;
+  const HingeAdjacency& ha = hinge_adjacency_;
+  const double* scale = spring_scale_.data();
+  const double* hinge_force = hinge_force_.data();
+  const double* xp = xs + 3 * p;
+  const Vec3 fp = externalForce(p, t, vs);
+  double sx = fp.x(), sy = fp.y(), sz = fp.z();
+  for (int e = a.offsets[p]; e < a.offsets[p + 1]; ++e) {
+    const double* xq = xs + 3 * a.other[e];
+    const double k = scale[a.spring[e]];
+    sx += k * (xq[0] - xp[0]);
+    sy += k * (xq[1] - xp[1]);
+    sz += k * (xq[2] - xp[2]);
+  }
+  // Then the hinges around p: -w k b each, in the hinge adjacency's order.
+  for (int e = ha.offsets[p]; e < ha.offsets[p + 1]; ++e) {
+    const double w = model_.hinges[ha.hinge[e]].weight[ha.slot[e]];
+    const double* kb = hinge_force + 3 * ha.hinge[e];
+    sx -= w * kb[0];
+    sy -= w * kb[1];
+    sz -= w * kb[2];
+  }
+  return Vec3(sx, sy, sz);
+}
+
 void ParticleSystem::gather(double t, Eigen::Ref<const Vector> x, Eigen::Ref<const Vector> v,
                             Eigen::Ref<Vector> f, bool accelerations) const {
   const int n = particleCount();
@@ -90,14 +116,12 @@ void ParticleSystem::gather(double t, Eigen::Ref<const Vector> x, Eigen::Ref<con
   const double* vs = v.data();
   double* fs = f.data();
   double* scale = spring_scale_.data();
-  const SpringAdjacency& a = adjacency_;
   // Blocks of springs a thread takes at a time: long enough for the vector loop, short enough
   // to share out evenly.
   constexpr int kBlock = 512;
   const int blocks = (springs + kBlock - 1) / kBlock;
   const int hinges = static_cast<int>(model_.hinges.size());
   double* hinge_force = hinge_force_.data();
-  const HingeAdjacency& ha = hinge_adjacency_;
 #pragma omp parallel if (n >= kParallelParticles)
   {
     // 1b. Every hinge's k b, once (hinge.h).
@@ -116,37 +140,15 @@ void ParticleSystem::gather(double t, Eigen::Ref<const Vector> x, Eigen::Ref<con
     // per-end loop's own arithmetic.
 #pragma omp for schedule(static)
     for (int p = 0; p < n; ++p) {
-      const double* xp = xs + 3 * p;
-      const Vec3 fp = externalForce(p, t, vs);
-      double sx = fp.x(), sy = fp.y(), sz = fp.z();
-      for (int e = a.offsets[p]; e < a.offsets[p + 1]; ++e) {
-        const double* xq = xs + 3 * a.other[e];
-        const double k = scale[a.spring[e]];
-        sx += k * (xq[0] - xp[0]);
-        sy += k * (xq[1] - xp[1]);
-        sz += k * (xq[2] - xp[2]);
-      }
-      // Then the hinges around p: -w k b each, in the hinge adjacency's order.
-      for (int e = ha.offsets[p]; e < ha.offsets[p + 1]; ++e) {
-        const double w = model_.hinges[ha.hinge[e]].weight[ha.slot[e]];
-        const double* kb = hinge_force + 3 * ha.hinge[e];
-        sx -= w * kb[0];
-        sy -= w * kb[1];
-        sz -= w * kb[2];
-      }
+      Vec3 sum = particleForce(p, t, xs, vs);
       if (accelerations) {
         if (model_.pinned[p]) {
           Eigen::Map<Vec3>(fs + 3 * p) = pin_acceleration;
           continue;
         }
-        const double inverse_mass = 1.0 / model_.mass[p];
-        sx *= inverse_mass;
-        sy *= inverse_mass;
-        sz *= inverse_mass;
+        sum *= 1.0 / model_.mass[p];
       }
-      fs[3 * p] = sx;
-      fs[3 * p + 1] = sy;
-      fs[3 * p + 2] = sz;
+      Eigen::Map<Vec3>(fs + 3 * p) = sum;
     }
   }
 }

@@ -139,70 +139,80 @@ int stability(const StabilityOptions& o) {
   return kOk;
 }
 
+// The options of a scene's stability maps (--scene and what shapes its maps).
+void addSceneMapOptions(CLI::App* cmd, StabilityOptions& o) {
+  cmd->add_option("--scene", o.scene,
+                  "Scene: every engine's stability map on it, as written, across "
+                  "--stiffness-scales and --mass-ratios, with the w_max theory line (default: the "
+                  "built-in oscillator)");
+  cmd->add_option("--engines", o.engines, "Scene maps: engines (all-fixed-step: every one; all-direct: all but mysim's iterative families)")
+      ->delimiter(',')
+      ->capture_default_str();
+  addEnginesFileOption(cmd, o.engines_files);
+  cmd->add_option("--classic-iterations", o.classic_iterations,
+                  "Scene maps: bullet-classic's solver passes, each its own map")
+      ->delimiter(',')
+      ->check(CLI::Range(1, 10000))
+      ->capture_default_str();
+  cmd->add_option("--mass-ratios", o.mass_ratios,
+                  "Scene maps: heavy / light mass of neighbouring particles (total mass kept)")
+      ->delimiter(',')
+      ->check(CLI::Range(1.0, 1e8))
+      ->capture_default_str();
+  cmd->add_option("--steps", o.steps, "Scene maps: steps per trial run")
+      ->check(CLI::Range(10L, 10'000'000L))
+      ->capture_default_str();
+  cmd->add_option("--seed-amplitude", o.seed_amplitude,
+                  "Scene maps: every trial starts with its free particles moved by up to this "
+                  "fraction of the shortest rest length (seeded, the same in every engine), so "
+                  "a limit does not depend on an engine's round-off; 0 turns it off")
+      ->check(CLI::Range(0.0, 1e-2))
+      ->capture_default_str();
+  cmd->add_option("--max-h-omega", o.max_h_omega,
+                  "Scene maps: the largest step tried, as h w_max (raise it to find where the "
+                  "implicit and position-based families stop being stable)")
+      ->check(CLI::Range(1.0, 1e6))
+      ->capture_default_str();
+  cmd->add_option("--name", o.name,
+                  "Scene maps: name of the map (its table is stability_NAME.csv; default: the "
+                  "scene's name), to keep two maps of one scene apart");
+  cmd->add_flag("--whole-run", o.whole_run,
+                "Scene maps: every trial runs the scene's whole duration instead of --steps "
+                "(a slow instability then shows; costs many steps at small steps)");
+}
+
+// The built-in oscillator's grid, and what both forms share (--out, --extremes, --jobs).
+void addOscillatorOptions(CLI::App* cmd, StabilityOptions& o) {
+  cmd->add_option("--integrators", o.integrators, "Oscillator: integrators")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--stiffness", o.stiffness, "Oscillator: spring stiffness values, N/m")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--stiffness-scales", o.stiffness_scales,
+                  "Scene maps: each spring's stiffness as the scene writes it, times these "
+                  "(1: as written; the springs' ratios kept)")
+      ->delimiter(',')
+      ->check(CLI::Range(1e-6, 1e6))
+      ->capture_default_str();
+  cmd->add_option("--masses", o.masses, "Oscillator: particle masses, kg")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--damping-ratio", o.damping_ratio, "Oscillator damping ratio (drag)")
+      ->capture_default_str();
+  cmd->add_option("--out", o.out, "Output directory")->capture_default_str();
+  cmd->add_flag("--extremes", o.extremes, "Also: 1e6-step energy drift, a 256 x 256 cloth");
+  cmd->add_option("--jobs", o.jobs, "Parallel runs (default: all cores)");
+}
+
 }  // namespace
 
 void addStabilityCommand(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<StabilityOptions>();
   CLI::App* cmd = app.add_subcommand(
       "stability", "Largest stable step per integrator, stiffness and mass (bisection)");
-  cmd->add_option("--scene", o->scene,
-                  "Scene: every engine's stability map on it, as written, across "
-                  "--stiffness-scales and --mass-ratios, with the w_max theory line (default: the "
-                  "built-in oscillator)");
-  cmd->add_option("--engines", o->engines, "Scene maps: engines (all-fixed-step: every one; all-direct: all but mysim's iterative families)")
-      ->delimiter(',')
-      ->capture_default_str();
-  addEnginesFileOption(cmd, o->engines_files);
-  cmd->add_option("--classic-iterations", o->classic_iterations,
-                  "Scene maps: bullet-classic's solver passes, each its own map")
-      ->delimiter(',')
-      ->check(CLI::Range(1, 10000))
-      ->capture_default_str();
-  cmd->add_option("--mass-ratios", o->mass_ratios,
-                  "Scene maps: heavy / light mass of neighbouring particles (total mass kept)")
-      ->delimiter(',')
-      ->check(CLI::Range(1.0, 1e8))
-      ->capture_default_str();
-  cmd->add_option("--steps", o->steps, "Scene maps: steps per trial run")
-      ->check(CLI::Range(10L, 10'000'000L))
-      ->capture_default_str();
-  cmd->add_option("--seed-amplitude", o->seed_amplitude,
-                  "Scene maps: every trial starts with its free particles moved by up to this "
-                  "fraction of the shortest rest length (seeded, the same in every engine), so "
-                  "a limit does not depend on an engine's round-off; 0 turns it off")
-      ->check(CLI::Range(0.0, 1e-2))
-      ->capture_default_str();
-  cmd->add_option("--max-h-omega", o->max_h_omega,
-                  "Scene maps: the largest step tried, as h w_max (raise it to find where the "
-                  "implicit and position-based families stop being stable)")
-      ->check(CLI::Range(1.0, 1e6))
-      ->capture_default_str();
-  cmd->add_option("--name", o->name,
-                  "Scene maps: name of the map (its table is stability_NAME.csv; default: the "
-                  "scene's name), to keep two maps of one scene apart");
-  cmd->add_flag("--whole-run", o->whole_run,
-                "Scene maps: every trial runs the scene's whole duration instead of --steps "
-                "(a slow instability then shows; costs many steps at small steps)");
-  cmd->add_option("--integrators", o->integrators, "Oscillator: integrators")
-      ->delimiter(',')
-      ->capture_default_str();
-  cmd->add_option("--stiffness", o->stiffness, "Oscillator: spring stiffness values, N/m")
-      ->delimiter(',')
-      ->capture_default_str();
-  cmd->add_option("--stiffness-scales", o->stiffness_scales,
-                  "Scene maps: each spring's stiffness as the scene writes it, times these "
-                  "(1: as written; the springs' ratios kept)")
-      ->delimiter(',')
-      ->check(CLI::Range(1e-6, 1e6))
-      ->capture_default_str();
-  cmd->add_option("--masses", o->masses, "Oscillator: particle masses, kg")
-      ->delimiter(',')
-      ->capture_default_str();
-  cmd->add_option("--damping-ratio", o->damping_ratio, "Oscillator damping ratio (drag)")
-      ->capture_default_str();
-  cmd->add_option("--out", o->out, "Output directory")->capture_default_str();
-  cmd->add_flag("--extremes", o->extremes, "Also: 1e6-step energy drift, a 256 x 256 cloth");
-  cmd->add_option("--jobs", o->jobs, "Parallel runs (default: all cores)");
+  addSceneMapOptions(cmd, *o);
+  addOscillatorOptions(cmd, *o);
   cmd->callback([o, cmd, &exit_code] {
     // A scene is mapped as written: one stiffness for every spring would make another scene
     // (cloth_stiff's 200 N/m flex springs as stiff as its 2000 N/m structural ones).

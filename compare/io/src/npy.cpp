@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include "compare/io/atomic_file.h"
 
@@ -59,6 +60,33 @@ std::string headerValue(const std::string& header, const std::string& key) {
   return first == std::string::npos ? "" : value.substr(first, last - first + 1);
 }
 
+// The header's shape tuple "(a, b, ...)": its extents and their product (at most 2^34 values).
+// What is wrong with it, if anything.
+std::optional<std::string> parseShape(const std::string& shape_text, std::vector<long>& shape,
+                                      std::size_t& count) {
+  if (shape_text.size() < 2 || shape_text.front() != '(' || shape_text.back() != ')') {
+    return "malformed shape " + shape_text;
+  }
+  std::string inner = shape_text.substr(1, shape_text.size() - 2);
+  for (std::size_t start = 0; start < inner.size();) {
+    std::size_t comma = inner.find(',', start);
+    if (comma == std::string::npos) comma = inner.size();
+    std::string item = inner.substr(start, comma - start);
+    item.erase(0, item.find_first_not_of(' '));
+    item.erase(item.find_last_not_of(' ') + 1);
+    start = comma + 1;
+    if (item.empty()) continue;
+    if (item.find_first_not_of("0123456789") != std::string::npos || item.size() > 12) {
+      return "malformed shape " + shape_text;
+    }
+    shape.push_back(std::stol(item));
+    const auto extent = static_cast<std::size_t>(shape.back());
+    if (extent != 0 && count > (std::size_t{1} << 34) / extent) return "array too large";
+    count *= extent;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::expected<NpyArray, std::string> readNpy(const std::string& path) {
@@ -95,28 +123,9 @@ std::expected<NpyArray, std::string> readNpy(const std::string& path) {
     return bad("Fortran-order array, expected C order (numpy.save of a C-contiguous array)");
   }
   std::string shape_text = headerValue(header, "shape");
-  if (shape_text.size() < 2 || shape_text.front() != '(' || shape_text.back() != ')') {
-    return bad("malformed shape " + shape_text);
-  }
   NpyArray array;
   std::size_t count = 1;
-  std::string inner = shape_text.substr(1, shape_text.size() - 2);
-  for (std::size_t start = 0; start < inner.size();) {
-    std::size_t comma = inner.find(',', start);
-    if (comma == std::string::npos) comma = inner.size();
-    std::string item = inner.substr(start, comma - start);
-    item.erase(0, item.find_first_not_of(' '));
-    item.erase(item.find_last_not_of(' ') + 1);
-    start = comma + 1;
-    if (item.empty()) continue;
-    if (item.find_first_not_of("0123456789") != std::string::npos || item.size() > 12) {
-      return bad("malformed shape " + shape_text);
-    }
-    array.shape.push_back(std::stol(item));
-    const auto extent = static_cast<std::size_t>(array.shape.back());
-    if (extent != 0 && count > (std::size_t{1} << 34) / extent) return bad("array too large");
-    count *= extent;
-  }
+  if (auto why = parseShape(shape_text, array.shape, count)) return bad(*why);
   // The claimed shape against the bytes the file has, before anything is allocated for it.
   const auto data_start = static_cast<std::uintmax_t>(in.tellg());
   if (ec || data_start > file_size || (file_size - data_start) / sizeof(double) < count) {

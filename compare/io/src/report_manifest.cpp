@@ -173,35 +173,22 @@ json tradeStudies(const fs::path& results) {
   return studies;
 }
 
-}  // namespace
-
-std::expected<json, std::string> reportManifest(const std::string& results_dir,
-                                                const ReportStamp& stamp,
-                                                const std::vector<ReportSeries>& series) {
-  const fs::path results(results_dir);
-  const std::string r = results_dir, d = stamp.data_dir;
-  json m = {{"stamp",
-             {{"version", stamp.version},
-              {"commit", stamp.commit},
-              {"command", stamp.command},
-              {"date", utcNow()},
-              {"machine", machine()}}},
-            {"results", r},
-            {"series", json::array()},
-            {"missing", json::array()}};
-  for (const ReportSeries& s : series) m["series"].push_back({{"key", s.key}, {"kind", s.kind}});
-  auto missing = [&](const std::string& input, const std::string& command,
-                     const std::string& pages) {
-    m["missing"].push_back({{"input", input}, {"command", command}, {"pages", pages}});
-  };
-
-  const fs::path gate = results / "gate.json";
-  m["gate"] = fs::exists(gate) ? json(gate.string()) : json();
-  if (!fs::exists(gate)) {
-    missing(gate.string(), "springcheck gate --json " + gate.string(),
-            "the dashboard's gate table");
+// Names an input the report lacks, the command that makes it and the pages that need it.
+class MissingInputs {
+ public:
+  explicit MissingInputs(json& list) : list_(list) {}
+  void operator()(const std::string& input, const std::string& command,
+                  const std::string& pages) const {
+    list_.push_back({{"input", input}, {"command", command}, {"pages", pages}});
   }
 
+ private:
+  json& list_;
+};
+
+// The sweeps' tables, their recommendations and every recommendation's bound.
+void addSweeps(json& m, const fs::path& results, const std::string& d,
+               const MissingInputs& missing) {
   m["sweeps"] = json::array();
   m["recommendations"] = json::array();
   for (const fs::path& table : filesIn(results / "sweep", "", ".csv")) {
@@ -233,12 +220,16 @@ std::expected<json, std::string> reportManifest(const std::string& results_dir,
   if (m["sweeps"].empty()) {
     for (const char* spec :
          {"chain_convergence", "cloth_speed_accuracy", "chain_self_consistency"}) {
-      const std::string table = r + "/sweep/" + spec + ".csv";
+      const std::string table = results.string() + "/sweep/" + spec + ".csv";
       missing(table, "springcheck sweep " + d + "/compare/sweeps/" + spec + ".json --out " + table,
               "speed and accuracy, convergence, the recommendation");
     }
   }
+}
 
+// The oscillator's stability table, the extremes and every scene's stability map.
+void addStability(json& m, const fs::path& results, const std::string& d,
+                  const MissingInputs& missing) {
   const fs::path stability = results / "stability";
   for (const char* table : {"stability", "extremes"}) {
     const fs::path path = stability / (std::string(table) + ".csv");
@@ -263,7 +254,12 @@ std::expected<json, std::string> reportManifest(const std::string& results_dir,
                 stability.string(),
             "every engine's stability map");
   }
+}
 
+// The comparisons, and which of the main job's groups (suite, energy) are missing.
+std::expected<void, std::string> addComparisons(json& m, const fs::path& results,
+                                                const std::string& d,
+                                                const MissingInputs& missing) {
   auto found = comparisons(results);
   if (!found) return std::unexpected(found.error());
   m["comparisons"] = std::move(*found);
@@ -271,6 +267,7 @@ std::expected<json, std::string> reportManifest(const std::string& results_dir,
     return std::ranges::any_of(m["comparisons"],
                                [&](const json& c) { return c["group"] == group; });
   };
+  const std::string r = results.string();
   if (!any_in("suite")) {
     missing(r + "/suite", "springcheck suite " + d + "/scenes --out " + r + "/suite",
             "drapes, sag and penetration, the largest disagreement");
@@ -284,35 +281,78 @@ std::expected<json, std::string> reportManifest(const std::string& results_dir,
               "energy of every integrator and engine");
     }
   }
-  // Mesh refinement (springcheck refine): the table, its estimates and the command that made them.
+  return {};
+}
+
+// Mesh refinement (springcheck refine): the table, its estimates and the command that made them.
+void addRefinement(json& m, const fs::path& results, const std::string& d,
+                   const MissingInputs& missing) {
   const fs::path refine = results / "refine" / "refine.csv";
   if (fs::exists(refine) && fs::exists(results / "refine" / "refine_estimates.csv")) {
     m["refine"] = {{"table", refine.string()},
                    {"estimates", (results / "refine" / "refine_estimates.csv").string()},
                    {"command", invocationBeside(refine.string())}};
-  } else {
-    m["refine"] = nullptr;
-    const std::string scenes = d + "/scenes/material/";
-    missing(refine.string(),
-            "springcheck refine " + scenes + "cantilever_strip.json " + scenes +
-                "cantilever_strip_flex.json " + scenes + "cusick_drape.json --resolutions 4,8,16 "
-                "--out " + r + "/refine",
-            "convergence as the mesh is refined: the cantilever against the elastica, flex "
-            "springs, the drape test");
+    return;
   }
-  m["physical_trade"] = tradeStudies(results);
-  m["headlines"] = reportHeadlines(m["comparisons"], m["stability"]["scenes"]);
+  m["refine"] = nullptr;
+  const std::string scenes = d + "/scenes/material/";
+  missing(refine.string(),
+          "springcheck refine " + scenes + "cantilever_strip.json " + scenes +
+              "cantilever_strip_flex.json " + scenes + "cusick_drape.json --resolutions 4,8,16 "
+              "--out " + results.string() + "/refine",
+          "convergence as the mesh is refined: the cantilever against the elastica, flex "
+          "springs, the drape test");
+}
+
+// The benchmarks (not part of the main job: they take minutes) and the main job's stage times
+// (scripts/run-suite.sh writes them: the last page's table).
+void addBenchAndTimings(json& m, const fs::path& results, const MissingInputs& missing) {
   const fs::path bench = results / "bench" / "bench.json";
   m["bench"] = fs::exists(bench) ? json(bench.string()) : json();
   if (m["bench"].is_null()) {
-    // The benchmarks take minutes and are not part of the main job: say what makes the page.
-    missing(bench.string(), "SPRINGCHECK_OUT=" + r + " scripts/run-bench.sh (from a checkout)",
+    missing(bench.string(),
+            "SPRINGCHECK_OUT=" + results.string() + " scripts/run-bench.sh (from a checkout)",
             "performance: time per step and force evaluations of each engine");
   }
-  // The main job's stage times (scripts/run-suite.sh writes them): the last page's table.
   const fs::path timings = results / "timings.json";
   std::error_code regular;
   m["timings"] = fs::is_regular_file(timings, regular) ? json(timings.string()) : json();
+}
+
+}  // namespace
+
+std::expected<json, std::string> reportManifest(const std::string& results_dir,
+                                                const ReportStamp& stamp,
+                                                const std::vector<ReportSeries>& series) {
+  const fs::path results(results_dir);
+  const std::string& d = stamp.data_dir;
+  json m = {{"stamp",
+             {{"version", stamp.version},
+              {"commit", stamp.commit},
+              {"command", stamp.command},
+              {"date", utcNow()},
+              {"machine", machine()}}},
+            {"results", results_dir},
+            {"series", json::array()},
+            {"missing", json::array()}};
+  for (const ReportSeries& s : series) m["series"].push_back({{"key", s.key}, {"kind", s.kind}});
+  const MissingInputs missing(m["missing"]);
+
+  const fs::path gate = results / "gate.json";
+  m["gate"] = fs::exists(gate) ? json(gate.string()) : json();
+  if (!fs::exists(gate)) {
+    missing(gate.string(), "springcheck gate --json " + gate.string(),
+            "the dashboard's gate table");
+  }
+  addSweeps(m, results, d, missing);
+  addStability(m, results, d, missing);
+  if (auto added = addComparisons(m, results, d, missing); !added) {
+    return std::unexpected(added.error());
+  }
+  addRefinement(m, results, d, missing);
+  m["physical_trade"] = tradeStudies(results);
+  m["headlines"] = reportHeadlines(m["comparisons"], m["stability"]["scenes"]);
+  addBenchAndTimings(m, results, missing);
   return m;
 }
 

@@ -126,6 +126,22 @@ std::expected<void, std::string> writeObjSequence(const std::string& folder,
   });
 }
 
+// trajectory.npy (frames x particles x 6) and times.npy.
+std::expected<void, std::string> writeTrajectory(const fs::path& dir, const mysim::RunRecord& r) {
+  const long frames = static_cast<long>(r.frames.size()), particles = r.frames.back().rows();
+  const std::string trajectory = (dir / "trajectory.npy").string();
+  auto done = writeNpy(trajectory, {frames, particles, 6}, [&](std::ostream& out) {
+    for (const mysim::ParticleRows& f : r.frames) {
+      // Frames are column-major (N x 6); the file wants each particle's six values together.
+      const Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor> rows = f;
+      out.write(reinterpret_cast<const char*>(rows.data()),
+                static_cast<std::streamsize>(rows.size() * sizeof(double)));
+    }
+  });
+  if (!done) return done;
+  return writeNpy((dir / "times.npy").string(), {frames}, r.times);
+}
+
 }  // namespace
 
 std::expected<void, std::string> writeRunOutputs(const std::string& dir_name,
@@ -165,17 +181,7 @@ std::expected<void, std::string> writeRunFiles(const std::string& dir_name,
   });
   if (!done) return done;
 
-  const long frames = static_cast<long>(r.frames.size()), particles = last.rows();
-  done = writeNpy(in("trajectory.npy"), {frames, particles, 6}, [&](std::ostream& out) {
-    for (const mysim::ParticleRows& f : r.frames) {
-      // Frames are column-major (N x 6); the file wants each particle's six values together.
-      const Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor> rows = f;
-      out.write(reinterpret_cast<const char*>(rows.data()),
-                static_cast<std::streamsize>(rows.size() * sizeof(double)));
-    }
-  });
-  if (!done) return done;
-  done = writeNpy(in("times.npy"), {frames}, r.times);
+  done = writeTrajectory(dir, r);
   if (!done) return done;
 
   if (!r.energies.empty()) {

@@ -153,68 +153,84 @@ std::vector<MetricInfo> contactMetrics() {
   };
 }
 
+// What a run's final shape reads: sag, a clamped strip's bend, a drape.
+std::vector<MetricInfo> shapeMetrics() {
+  return {
+    {"blowup", false, "1/0", "1 if the run blew up",
+     [](E m) { return V(m.blew_up ? 1.0 : 0.0); }},
+    {"closed_form_error", false, "m or rel", "error against the scene's closed form",
+     [](E m) { return m.closed_form ? V(m.closed_form->error) : V(); }},
+    {"sag_lowest", false, "m", "lowest point below the pins at the end",
+     [](E m) { return V(m.sag_lowest); }, nullptr, true},
+    {"tip_drop", false, "m", "a clamped strip's free end below the clamp's edge at the end",
+     [](E m) { return m.tip_drop; }, nullptr, true},
+    {"chord_angle", false, "deg", "a clamped strip's chord from clamp edge to tip, below level",
+     [](E m) { return m.chord_angle; }, nullptr, true},
+    {"bending_length", false, "m",
+     "the bending length a clamped strip's chord reads (the standard's l/2 at 41.5 deg)",
+     [](E m) { return m.bending_length; }, nullptr, true},
+    {"drape_coefficient", false, "1",
+     "Cusick drape coefficient (A_shadow - A_support) / (A_specimen - A_support) at the end",
+     [](E m) { return m.drape_coefficient; }, nullptr, true},
+    {"drape_folds", false, "1", "folds (lobes) of a draped disc's outline at the end",
+     [](E m) { return m.drape_folds; }, nullptr, true, true},
+    {"sag_free_middle", false, "m", "middle of the free edge below the pins at the end",
+     [](E m) { return m.sag_free_middle; }}};
+}
+
+// Energy, strain and momentum over the run.
+std::vector<MetricInfo> driftMetrics() {
+  return {
+    {"energy_drift_max", false, "rel", "max |E(t) - E(0)| / E_ref",
+     [](E m) { return m.drift.total.empty() ? V() : V(m.drift.max_abs_total); }},
+    {"energy_rise", false, "J", "largest rise of total energy above an earlier low",
+     [](E m) { return m.drift.total.empty() ? V() : V(m.drift.max_rise); }},
+    {"settling_time", false, "s", "time after which KE stays below 1e-4 of its peak",
+     [](E m) { return m.settling_time; }},
+    {"max_strain", false, "rel", "largest |l / rest - 1| of any spring, any frame",
+     [](E m) { return V(m.max_strain); }},
+    {"linear_momentum_drift", false, "rel",
+     "max |P(t) - P(0) - M g t| / max sum m|v| (free bodies only)",
+     [](E m) { return m.momentum ? V(m.momentum->linear) : V(); }},
+    {"angular_momentum_drift", false, "rel",
+     "max |L(t) - L(0)| about the centre of mass / its scale (free bodies only)",
+     [](E m) { return m.momentum ? V(m.momentum->angular) : V(); }}};
+}
+
+// Of a pair of runs: how far apart their shapes and trajectories are.
+std::vector<MetricInfo> pairMetrics() {
+  using P = const PairMetrics&;
+  return {
+    {"drape_rms", true, "m", "RMS per-node distance of the final shapes", nullptr,
+     [](P m) { return V(m.drape.rms); }},
+    {"drape_max", true, "m", "max per-node distance of the final shapes", nullptr,
+     [](P m) { return V(m.drape.max); }},
+    {"drape_max_mirror_aware", true, "m",
+     "drape_max, or the distance to the other's mirror image across the scene's plane of "
+     "symmetry where that is under half of it (a fold buckled the other way)",
+     nullptr, [](P m) { return V(m.drapeMirrorAware()); }},
+    {"drape_mirrored", true, "1/0",
+     "1 if drape_max_mirror_aware is the mirrored distance; empty without a symmetry plane",
+     nullptr, [](P m) { return m.drape_mirrored ? V(m.mirrorCloser() ? 1.0 : 0.0) : V(); }},
+    {"chamfer", true, "m", "symmetric Chamfer distance of the final surfaces", nullptr,
+     [](P m) { return V(m.surface.chamfer); }},
+    {"hausdorff", true, "m", "Hausdorff distance of the final surfaces", nullptr,
+     [](P m) { return V(m.surface.hausdorff); }},
+    {"sag_difference", true, "m", "difference of the final lowest-point sag", nullptr,
+     [](P m) { return V(m.sag_difference); }},
+    {"trajectory_rms_max", true, "m", "max over frames of the RMS node distance", nullptr,
+     [](P m) { return m.trajectory_rms_max; }}};
+}
+
 }  // namespace
 
 const std::vector<MetricInfo>& metricCatalog() {
-  using P = const PairMetrics&;
   static const std::vector<MetricInfo> catalog = [] {
-    std::vector<MetricInfo> rows = {
-      {"blowup", false, "1/0", "1 if the run blew up",
-       [](E m) { return V(m.blew_up ? 1.0 : 0.0); }},
-      {"closed_form_error", false, "m or rel", "error against the scene's closed form",
-       [](E m) { return m.closed_form ? V(m.closed_form->error) : V(); }},
-      {"sag_lowest", false, "m", "lowest point below the pins at the end",
-       [](E m) { return V(m.sag_lowest); }, nullptr, true},
-      {"tip_drop", false, "m", "a clamped strip's free end below the clamp's edge at the end",
-       [](E m) { return m.tip_drop; }, nullptr, true},
-      {"chord_angle", false, "deg", "a clamped strip's chord from clamp edge to tip, below level",
-       [](E m) { return m.chord_angle; }, nullptr, true},
-      {"bending_length", false, "m",
-       "the bending length a clamped strip's chord reads (the standard's l/2 at 41.5 deg)",
-       [](E m) { return m.bending_length; }, nullptr, true},
-      {"drape_coefficient", false, "1",
-       "Cusick drape coefficient (A_shadow - A_support) / (A_specimen - A_support) at the end",
-       [](E m) { return m.drape_coefficient; }, nullptr, true},
-      {"drape_folds", false, "1", "folds (lobes) of a draped disc's outline at the end",
-       [](E m) { return m.drape_folds; }, nullptr, true, true},
-      {"sag_free_middle", false, "m", "middle of the free edge below the pins at the end",
-       [](E m) { return m.sag_free_middle; }}};
-    const std::vector<MetricInfo> contact = contactMetrics();
-    rows.insert(rows.end(), contact.begin(), contact.end());
-    rows.insert(rows.end(), {
-      {"energy_drift_max", false, "rel", "max |E(t) - E(0)| / E_ref",
-       [](E m) { return m.drift.total.empty() ? V() : V(m.drift.max_abs_total); }},
-      {"energy_rise", false, "J", "largest rise of total energy above an earlier low",
-       [](E m) { return m.drift.total.empty() ? V() : V(m.drift.max_rise); }},
-      {"settling_time", false, "s", "time after which KE stays below 1e-4 of its peak",
-       [](E m) { return m.settling_time; }},
-      {"max_strain", false, "rel", "largest |l / rest - 1| of any spring, any frame",
-       [](E m) { return V(m.max_strain); }},
-      {"linear_momentum_drift", false, "rel",
-       "max |P(t) - P(0) - M g t| / max sum m|v| (free bodies only)",
-       [](E m) { return m.momentum ? V(m.momentum->linear) : V(); }},
-      {"angular_momentum_drift", false, "rel",
-       "max |L(t) - L(0)| about the centre of mass / its scale (free bodies only)",
-       [](E m) { return m.momentum ? V(m.momentum->angular) : V(); }},
-      {"drape_rms", true, "m", "RMS per-node distance of the final shapes", nullptr,
-       [](P m) { return V(m.drape.rms); }},
-      {"drape_max", true, "m", "max per-node distance of the final shapes", nullptr,
-       [](P m) { return V(m.drape.max); }},
-      {"drape_max_mirror_aware", true, "m",
-       "drape_max, or the distance to the other's mirror image across the scene's plane of "
-       "symmetry where that is under half of it (a fold buckled the other way)",
-       nullptr, [](P m) { return V(m.drapeMirrorAware()); }},
-      {"drape_mirrored", true, "1/0",
-       "1 if drape_max_mirror_aware is the mirrored distance; empty without a symmetry plane",
-       nullptr, [](P m) { return m.drape_mirrored ? V(m.mirrorCloser() ? 1.0 : 0.0) : V(); }},
-      {"chamfer", true, "m", "symmetric Chamfer distance of the final surfaces", nullptr,
-       [](P m) { return V(m.surface.chamfer); }},
-      {"hausdorff", true, "m", "Hausdorff distance of the final surfaces", nullptr,
-       [](P m) { return V(m.surface.hausdorff); }},
-      {"sag_difference", true, "m", "difference of the final lowest-point sag", nullptr,
-       [](P m) { return V(m.sag_difference); }},
-      {"trajectory_rms_max", true, "m", "max over frames of the RMS node distance", nullptr,
-       [](P m) { return m.trajectory_rms_max; }}});
+    std::vector<MetricInfo> rows;
+    for (auto part : {shapeMetrics, contactMetrics, driftMetrics, pairMetrics}) {
+      const std::vector<MetricInfo> more = part();
+      rows.insert(rows.end(), more.begin(), more.end());
+    }
     return rows;
   }();
   return catalog;

@@ -17,6 +17,69 @@ bool GateReport::passed() const {
   return std::all_of(results.begin(), results.end(), [](const CheckResult& r) { return r.passed; });
 }
 
+namespace {
+
+// Why the check has no run to read: one of its engines was refused or failed.
+std::optional<std::string> missingRun(const ToleranceCheck& check, const Comparison& c) {
+  auto named = [&](const Comparison::Refusal& r) {
+    return std::find(check.engines.begin(), check.engines.end(), r.engine) != check.engines.end();
+  };
+  for (const Comparison::Refusal& refusal : c.refused) {
+    if (named(refusal)) return "refused: " + refusal.reason;
+  }
+  for (const Comparison::Refusal& failure : c.failed) {
+    if (named(failure)) return "failed: " + failure.reason;
+  }
+  return std::nullopt;
+}
+
+const EngineMetrics* metricsOf(const Comparison& c, const std::string& engine) {
+  for (const EngineMetrics& m : c.engines) {
+    if (m.engine == engine) return &m;
+  }
+  return nullptr;
+}
+
+// r.measured from one engine's run (with the closed form's unit, and a note when the error is
+// the motion left at the end); false with r.problem when the run blew up.
+bool measureOne(const ToleranceCheck& check, const Comparison& c, CheckResult& r) {
+  const EngineMetrics* m = metricsOf(c, check.engines[0]);
+  if (m->blew_up && check.metric != "blowup") {
+    r.problem = check.engines[0] + " blew up at t = " + std::to_string(m->blowup_time) + " s";
+    return false;
+  }
+  r.measured = metricValue(*m, check.metric);
+  if (check.metric == "closed_form_error" && m->closed_form) {
+    r.unit = m->closed_form->unit;
+  }
+  if (check.metric == "closed_form_error" && m->closed_form && m->closed_form->atMotionFloor()) {
+    r.note = "the run still moved " + formatNumber(*m->closed_form->motion_left, 2) +
+             " m over its last tenth: an error this close to that is the motion left at the "
+             "end, not the engine's accuracy (a longer run shows it)";
+  }
+  return true;
+}
+
+// r.measured from the pair of the check's two engines; false with r.problem when one blew up.
+bool measurePair(const ToleranceCheck& check, const Comparison& c, CheckResult& r) {
+  for (const std::string& engine : check.engines) {
+    if (metricsOf(c, engine)->blew_up) {
+      r.problem = engine + " blew up at t = " + std::to_string(metricsOf(c, engine)->blowup_time) +
+                  " s";
+      return false;
+    }
+  }
+  for (const PairMetrics& p : c.pairs) {
+    if ((p.a == check.engines[0] && p.b == check.engines[1]) ||
+        (p.a == check.engines[1] && p.b == check.engines[0])) {
+      r.measured = metricValue(p, check.metric);
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
 CheckResult evaluateCheck(const ToleranceCheck& check, const Comparison& c) {
   CheckResult r{check, std::nullopt, false, "", "", {}, ""};
   if (const MetricInfo* info = findMetric(check.metric)) r.unit = info->unit;
@@ -27,56 +90,11 @@ CheckResult evaluateCheck(const ToleranceCheck& check, const Comparison& c) {
     }
     r.steppers.push_back(stepper);
   }
-  for (const Comparison::Refusal& refusal : c.refused) {
-    if (std::find(check.engines.begin(), check.engines.end(), refusal.engine) !=
-        check.engines.end()) {
-      r.problem = "refused: " + refusal.reason;
-      return r;
-    }
+  if (auto missing = missingRun(check, c)) {
+    r.problem = *missing;
+    return r;
   }
-  for (const Comparison::Refusal& failure : c.failed) {
-    if (std::find(check.engines.begin(), check.engines.end(), failure.engine) !=
-        check.engines.end()) {
-      r.problem = "failed: " + failure.reason;
-      return r;
-    }
-  }
-  auto metrics_of = [&](const std::string& engine) -> const EngineMetrics* {
-    for (const EngineMetrics& m : c.engines) {
-      if (m.engine == engine) return &m;
-    }
-    return nullptr;
-  };
-  if (check.engines.size() == 1) {
-    const EngineMetrics* m = metrics_of(check.engines[0]);
-    if (m->blew_up && check.metric != "blowup") {
-      r.problem = check.engines[0] + " blew up at t = " + std::to_string(m->blowup_time) + " s";
-      return r;
-    }
-    r.measured = metricValue(*m, check.metric);
-    if (check.metric == "closed_form_error" && m->closed_form) {
-      r.unit = m->closed_form->unit;
-    }
-    if (check.metric == "closed_form_error" && m->closed_form && m->closed_form->atMotionFloor()) {
-      r.note = "the run still moved " + formatNumber(*m->closed_form->motion_left, 2) +
-               " m over its last tenth: an error this close to that is the motion left at the "
-               "end, not the engine's accuracy (a longer run shows it)";
-    }
-  } else {
-    for (const std::string& engine : check.engines) {
-      if (metrics_of(engine)->blew_up) {
-        r.problem =
-            engine + " blew up at t = " + std::to_string(metrics_of(engine)->blowup_time) + " s";
-        return r;
-      }
-    }
-    for (const PairMetrics& p : c.pairs) {
-      if ((p.a == check.engines[0] && p.b == check.engines[1]) ||
-          (p.a == check.engines[1] && p.b == check.engines[0])) {
-        r.measured = metricValue(p, check.metric);
-      }
-    }
-  }
+  if (!(check.engines.size() == 1 ? measureOne(check, c, r) : measurePair(check, c, r))) return r;
   if (!r.measured) {
     r.problem = "metric '" + check.metric + "' is not defined for this scene";
     return r;

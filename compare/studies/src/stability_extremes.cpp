@@ -13,16 +13,15 @@
 
 namespace springcheck {
 
-// Very long runs, very small masses, a very large cloth: what happens at the extremes.
-std::expected<void, std::string> writeExtremes(const EngineRegistry& registry,
-                                               const std::string& path, int jobs) {
-  std::string failed;  // the first run that could not be made, if any
-  std::ostringstream out;
-  out.precision(8);
-  out << "case,integrator,quantity,value,unit\n";
-  // 10^6 steps of the undamped oscillator at h w = 0.1.
+namespace {
+
+// 10^6 steps of the undamped oscillator at h w = 0.1, each long-run method's energy drift and
+// wall time as rows of the extremes table.
+std::expected<std::string, std::string> longOscillatorRows(const EngineRegistry& registry,
+                                                           int jobs) {
   const std::vector<std::string> long_methods = {"symplectic-euler", "verlet", "rk4",
                                                  "backward-euler", "trapezoidal"};
+  std::string failed;  // the first run that could not be made, if any
   std::vector<std::string> rows(long_methods.size());
   std::mutex mutex;
   forEachInParallel(long_methods.size(), jobCount(jobs, long_methods.size()), [&](std::size_t k) {
@@ -50,26 +49,44 @@ std::expected<void, std::string> writeExtremes(const EngineRegistry& registry,
     rows[k] = row.str();
   });
   if (!failed.empty()) return std::unexpected("oscillator 1e6 steps, " + failed);
-  for (const std::string& row : rows) out << row;
+  std::string text;
+  for (const std::string& row : rows) text += row;
+  return text;
+}
 
-  // A 256 x 256 cloth (the matched hanging cloth's 1 m, 0.5 kg and springs at 65 536 particles).
+// The matched hanging cloth's 1 m, 0.5 kg and springs at 256 x 256 (65 536 particles).
+mysim::Scene largeCloth(const char* integrator, double dt, int steps) {
+  mysim::Scene s;
+  s.name = "cloth256";
+  s.kind = mysim::SystemKind::Cloth;
+  s.cloth.rows = s.cloth.cols = 256;
+  s.cloth.particle_mass = 0.5 / (256.0 * 256.0);
+  s.cloth.structural = s.cloth.shear = mysim::SpringParameters{100.0, 0.0};
+  s.cloth.flex = mysim::SpringParameters{10.0, 0.0};
+  s.pins = {0, 255};
+  s.gravity = mysim::Vec3(0, -9.8, 0);
+  s.integrator.name = integrator;
+  s.integrator.cg_tolerance = 1e-6;
+  s.dt = dt;
+  s.duration = steps * dt;
+  s.sample_interval = s.duration;
+  return s;
+}
+
+}  // namespace
+
+// Very long runs, a very large cloth: what happens at the extremes.
+std::expected<void, std::string> writeExtremes(const EngineRegistry& registry,
+                                               const std::string& path, int jobs) {
+  std::ostringstream out;
+  out.precision(8);
+  out << "case,integrator,quantity,value,unit\n";
+  auto long_rows = longOscillatorRows(registry, jobs);
+  if (!long_rows) return std::unexpected(long_rows.error());
+  out << *long_rows;
   for (auto [integrator, dt, steps] :
        {std::tuple{"symplectic-euler", 1e-4, 50}, {"backward-euler", 2e-3, 5}}) {
-    mysim::Scene s;
-    s.name = "cloth256";
-    s.kind = mysim::SystemKind::Cloth;
-    s.cloth.rows = s.cloth.cols = 256;
-    s.cloth.particle_mass = 0.5 / (256.0 * 256.0);
-    s.cloth.structural = s.cloth.shear = mysim::SpringParameters{100.0, 0.0};
-    s.cloth.flex = mysim::SpringParameters{10.0, 0.0};
-    s.pins = {0, 255};
-    s.gravity = mysim::Vec3(0, -9.8, 0);
-    s.integrator.name = integrator;
-    s.integrator.cg_tolerance = 1e-6;
-    s.dt = dt;
-    s.duration = steps * dt;
-    s.sample_interval = s.duration;
-    auto r = registry.run("mysim", s);
+    auto r = registry.run("mysim", largeCloth(integrator, dt, steps));
     if (!r)
       return std::unexpected(std::string("cloth 256 x 256, ") + integrator + ": " +
                              r.error().message);

@@ -1,7 +1,5 @@
-// Every comparison metric on a hand-made case whose answer is known, and the gate.
+// Every comparison metric on a hand-made case whose answer is known.
 // ctest-label: unit
-// ctest-label Gate: physics
-// ctest-label RunStatus: physics
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -22,8 +20,6 @@
 #include "compare/metrics/sag_metric.h"
 #include "compare/metrics/settling_metric.h"
 #include "compare/metrics/surface_distance.h"
-#include "compare/studies/gate.h"
-#include "compare/studies/tolerances.h"
 #include "mysim/cloth.h"
 #include "mysim/cloth_mesh.h"
 #include "mysim/scene_file.h"
@@ -304,143 +300,6 @@ TEST(SettlingMetric, TimeAfterWhichKineticEnergyStaysLowAndMaxStrain) {
   frame(1, 0) = 2.5;
   run.frames = {frame};
   EXPECT_DOUBLE_EQ(maxStrainOverRun(model, run), 0.25);
-}
-
-using test::kRoot;
-
-std::string checkJson(const std::string& fields) { return R"({"checks": [{)" + fields + "}]}"; }
-const std::string kGoodCheck =
-    R"("scene": "scenes/matched/chain_hanging.json", "engines": ["mysim", "bullet-deformable"],
-       "metric": "drape_max", "bound": 1e-4, "why": "test")";
-
-TEST(Tolerances, MalformedFilesAreRefusedNamingTheCheckAndField) {
-  struct Case {
-    std::string text, expected;
-  };
-  const std::vector<Case> cases = {
-      {checkJson(R"("engines": ["mysim"], "metric": "sag_lowest", "bound": 1, "why": "w")"),
-       "checks[0].scene: missing"},
-      {checkJson(R"("scene": "scenes/none.json", "engines": ["mysim"], "metric": "sag_lowest",
-                    "bound": 1, "why": "w")"),
-       "checks[0].scene: unknown scene"},
-      {checkJson(R"("scene": "scenes/matched/chain_hanging.json", "engines": ["havok"],
-                    "metric": "sag_lowest", "bound": 1, "why": "w")"),
-       "checks[0].engines: unknown engine 'havok'"},
-      {checkJson(R"("scene": "scenes/matched/chain_hanging.json", "engines": ["mysim"],
-                    "metric": "wobble", "bound": 1, "why": "w")"),
-       "checks[0].metric: unknown metric 'wobble'"},
-      {checkJson(R"("scene": "scenes/matched/chain_hanging.json", "engines": ["mysim"],
-                    "metric": "drape_max", "bound": 1, "why": "w")"),
-       "checks[0].engines: metric 'drape_max' takes two engines"},
-      {checkJson(R"("scene": "scenes/matched/chain_hanging.json", "engines": ["mysim"],
-                    "metric": "sag_lowest", "bound": -1, "why": "w")"),
-       "checks[0].bound: expected a finite number >= 0"},
-      {checkJson(R"("scene": "scenes/matched/chain_hanging.json", "engines": ["mysim"],
-                    "metric": "sag_lowest", "bound": 1, "why": "")"),
-       "checks[0].why: expected the reason"},
-      {checkJson(kGoodCheck + R"(, "tolerance": 3)"), "checks[0].tolerance: unknown field"},
-      {R"({"checks": []})", "checks: expected a non-empty list"},
-  };
-  EngineRegistry registry;
-  for (const Case& c : cases) {
-    auto parsed = parseTolerances(c.text, "tol.json", kRoot, registry);
-    ASSERT_FALSE(parsed) << c.text;
-    EXPECT_EQ(parsed.error().rfind("tol.json: ", 0), 0u) << parsed.error();
-    EXPECT_NE(parsed.error().find(c.expected), std::string::npos) << parsed.error();
-  }
-  EXPECT_TRUE(parseTolerances(checkJson(kGoodCheck), "tol.json", kRoot, registry));
-}
-
-TEST(Gate, FailsWhenABoundIsTightenedBelowTheMeasuredValue) {
-  EngineRegistry registry;
-  auto tolerances = parseTolerances(checkJson(kGoodCheck), "tol.json", kRoot, registry);
-  ASSERT_TRUE(tolerances) << tolerances.error();
-  const GateReport loose = runGate(registry, *tolerances).value();
-  ASSERT_TRUE(loose.results[0].measured);
-  EXPECT_TRUE(loose.passed());
-  const double measured = *loose.results[0].measured;
-  EXPECT_GT(measured, 0.0);
-  tolerances->checks[0].bound = 0.5 * measured;
-  const GateReport tight = runGate(registry, *tolerances).value();
-  EXPECT_FALSE(tight.passed());
-  EXPECT_DOUBLE_EQ(*tight.results[0].measured, measured);  // same input, same output
-}
-
-TEST(Gate, AnEngineThatRefusesTheSceneFailsItsCheck) {
-  EngineRegistry registry;
-  auto tolerances =
-      parseTolerances(checkJson(R"("scene": "scenes/seed/cloth.json", "engines": ["bullet-classic"],
-                   "metric": "sag_lowest", "bound": 10, "why": "w")"),
-                      "tol.json", kRoot, registry);
-  ASSERT_TRUE(tolerances) << tolerances.error();
-  const GateReport report = runGate(registry, *tolerances).value();
-  EXPECT_FALSE(report.passed());
-  EXPECT_NE(report.results[0].problem.find("refused"), std::string::npos);
-}
-
-}  // namespace
-}  // namespace springcheck
-
-namespace springcheck {
-namespace {
-
-mysim::Scene chainScene(const std::string& integrator_fields) {
-  auto scene = mysim::parseScene(
-      R"({"system": {"type": "chain", "particles": 4, "rest_length": 0.1, "particle_mass": 0.01,
-          "stiffness": 100}, "forces": {"gravity": [0, -9.8, 0]},
-          "integrator": {"dt": 0.01, "duration": 0.2, )" +
-          integrator_fields + "}}",
-      "status.json");
-  EXPECT_TRUE(scene) << scene.error();
-  return *scene;
-}
-
-// dopri5 asked for 1e-30 (tighter than double precision) once ran forever; it must stop at its
-// step limits and say so.
-TEST(RunStatus, AnUnreachableAdaptiveToleranceStopsTheRunAsAStepLimit) {
-  const auto run = EngineRegistry().run(
-      "mysim", chainScene(R"("name": "dopri5", "abs_tolerance": 1e-30, "rel_tolerance": 1e-30)"));
-  ASSERT_TRUE(run) << run.error().message;
-  EXPECT_EQ(run->status(), "step-limit");
-  ASSERT_TRUE(run->blowup);
-  EXPECT_LT(run->blowup->time, 0.2);
-}
-
-// A CG that cannot converge in one iteration finishes the run but says the run is less accurate
-// than asked, instead of only counting it.
-TEST(RunStatus, LinearSolvesThatStopShortAreAStatusNotJustACount) {
-  const auto run = EngineRegistry().run(
-      "mysim",
-      chainScene(R"("name": "backward-euler", "cg_max_iterations": 1, "cg_tolerance": 1e-12)"));
-  ASSERT_TRUE(run) << run.error().message;
-  EXPECT_FALSE(run->blowup);
-  EXPECT_GT(run->counts.solver_failures, 0);
-  EXPECT_EQ(run->status(), "solver-not-converged");
-  const auto fine = EngineRegistry().run("mysim", chainScene(R"("name": "backward-euler")"));
-  EXPECT_EQ(fine->status(), "ok");
-}
-
-// Runs whose durations are not whole multiples of their steps end at different times, each with
-// a last frame of its own: the distance is taken over the times both sampled.
-TEST(TrajectoryDistance, IsTakenOverTheTimesBothRunsSampled) {
-  auto record = [](std::vector<double> times, double offset) {
-    mysim::RunRecord r;
-    r.times = times;
-    for (double t : times) {
-      mysim::ParticleRows f = mysim::ParticleRows::Zero(2, 6);
-      f(0, 0) = t + offset;
-      f(1, 0) = t + offset;
-      r.frames.push_back(f);
-    }
-    return r;
-  };
-  const mysim::RunRecord a = record({0.0, 0.16, 0.32, 0.34}, 0.0);
-  const mysim::RunRecord b = record({0.0, 0.16, 0.32, 0.3412}, 0.01);
-  const auto d = trajectoryDistance(a, b);
-  ASSERT_TRUE(d);
-  EXPECT_NEAR(d->max_rms, 0.01, 1e-15);   // every shared frame is 0.01 apart
-  EXPECT_NEAR(d->last_rms, 0.01, 1e-15);  // the last shared time, 0.32
-  EXPECT_FALSE(trajectoryDistance(record({0.05}, 0.0), record({0.07}, 0.0)));
 }
 
 }  // namespace

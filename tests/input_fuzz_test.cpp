@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <random>
 #include <sstream>
 
@@ -148,13 +149,14 @@ std::string outcome(const std::string& error, const std::string& source) {
   return "other";
 }
 
-TEST(InputFuzz, EveryMutatedInputIsAcceptedOrRefusedNamingItsSourceNeverACrash) {
-  const fs::path root = SPRINGCHECK_SOURCE_DIR;
-  struct Base {
-    std::string kind;
-    fs::path path;
-  };
-  std::vector<Base> bases;
+struct FuzzBase {
+  std::string kind;  // scene, sweep, tolerances or engines
+  fs::path path;
+};
+
+// Every input file the project ships of the four kinds a user writes, in path order.
+std::vector<FuzzBase> fuzzBases(const fs::path& root) {
+  std::vector<FuzzBase> bases;
   for (const auto& e : fs::recursive_directory_iterator(root / "scenes")) {
     if (e.path().extension() == ".json") bases.push_back({"scene", e.path()});
   }
@@ -165,14 +167,36 @@ TEST(InputFuzz, EveryMutatedInputIsAcceptedOrRefusedNamingItsSourceNeverACrash) 
   bases.push_back({"engines", root / "examples/external/engines.json"});
   bases.push_back({"engines", root / "tests/data/misbehaving_engines.json"});
   std::sort(bases.begin(), bases.end(),
-            [](const Base& a, const Base& b) { return a.path < b.path; });
+            [](const FuzzBase& a, const FuzzBase& b) { return a.path < b.path; });
+  return bases;
+}
 
+// Reads `text` as its base's kind (a scene is also built into its model); the refusal, if any.
+std::optional<std::string> readAs(const FuzzBase& base, const std::string& text,
+                                  const std::string& source, EngineRegistry& registry) {
+  if (base.kind == "scene") {
+    auto scene = mysim::parseScene(text, source, registry.sceneSections());
+    if (!scene) return scene.error();
+    mysim::buildModel(*scene);
+  } else if (base.kind == "sweep") {
+    if (auto spec = parseSweepSpec(text, source, registry); !spec) return spec.error();
+  } else if (base.kind == "tolerances") {
+    auto t = parseTolerances(text, source, base.path.parent_path().string(), registry);
+    if (!t) return t.error();
+  } else if (auto e = parseEnginesFile(text, source); !e) {
+    return e.error();
+  }
+  return std::nullopt;
+}
+
+TEST(InputFuzz, EveryMutatedInputIsAcceptedOrRefusedNamingItsSourceNeverACrash) {
+  const std::vector<FuzzBase> bases = fuzzBases(SPRINGCHECK_SOURCE_DIR);
   constexpr int kMutationsPerFile = 500;
   std::mt19937_64 random(20261124);
   std::map<std::string, int> outcomes;
   int inputs = 0, accepted = 0;
   double slowest = 0.0;
-  for (const Base& base : bases) {
+  for (const FuzzBase& base : bases) {
     const std::string original = readText(base.path);
     // The mutated text stands in the original's place, so its relative paths resolve.
     const std::string source =
@@ -181,36 +205,16 @@ TEST(InputFuzz, EveryMutatedInputIsAcceptedOrRefusedNamingItsSourceNeverACrash) 
       const std::string text = mutate(original, random);
       EngineRegistry registry;
       const auto start = std::chrono::steady_clock::now();
-      std::string error;
-      bool ok = false;
-      if (base.kind == "scene") {
-        auto scene = mysim::parseScene(text, source, registry.sceneSections());
-        ok = scene.has_value();
-        if (ok)
-          mysim::buildModel(*scene);
-        else
-          error = scene.error();
-      } else if (base.kind == "sweep") {
-        auto spec = parseSweepSpec(text, source, registry);
-        ok = spec.has_value();
-        if (!ok) error = spec.error();
-      } else if (base.kind == "tolerances") {
-        auto t = parseTolerances(text, source, base.path.parent_path().string(), registry);
-        ok = t.has_value();
-        if (!ok) error = t.error();
-      } else {
-        auto e = parseEnginesFile(text, source);
-        ok = e.has_value();
-        if (!ok) error = e.error();
-      }
+      const std::optional<std::string> refusal = readAs(base, text, source, registry);
       const double seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       slowest = std::max(slowest, seconds);
       ++inputs;
-      if (ok) {
+      if (!refusal) {
         ++accepted;
         continue;
       }
+      const std::string& error = *refusal;
       ASSERT_EQ(error.rfind(source + ": ", 0), 0u)
           << "refusal does not start with its source: " << error.substr(0, 300);
       EXPECT_LT(error.size(), 1500u) << error.substr(0, 300);

@@ -11,6 +11,7 @@
 #include <random>
 
 #include "mysim/collider.h"
+#include "mysim/contact.h"
 #include "mysim/scene_file.h"
 
 namespace mysim {

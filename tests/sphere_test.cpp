@@ -9,6 +9,7 @@
 // ctest-label SphereCollider: unit
 #include <gtest/gtest.h>
 
+#include "mysim/contact.h"
 #include "mysim/scene_file.h"
 #include "test_support.h"
 

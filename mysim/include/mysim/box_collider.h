@@ -2,7 +2,7 @@
 #include <nlohmann/json_fwd.hpp>
 #include <optional>
 
-#include "mysim/contact.h"
+#include "mysim/collider_surface.h"
 
 namespace mysim {
 

@@ -52,11 +52,4 @@ Friction readFriction(FieldReader& r);
 // before friction existed, so their model files and hashes did not change).
 nlohmann::json describeCollider(const Collider& c);
 
-// After a step: every free particle touching a collider goes onto its surface (applyContact),
-// colliders in the model's order, each avoiding exits into the others (a box's bottom face on
-// the ground), with the collider's friction against the particle's position when the step
-// began (`start`, 3N). Returns how many contacts were applied.
-int resolveContacts(const std::vector<Collider>& colliders, const std::vector<char>& pinned,
-                    Eigen::Ref<const Vector> start, Eigen::Ref<Vector> x, Eigen::Ref<Vector> v);
-
 }  // namespace mysim

@@ -1,29 +1,11 @@
 #pragma once
-#include <functional>
+#include <vector>
 
+#include "mysim/collider.h"
+#include "mysim/collider_surface.h"
 #include "mysim/types.h"
 
 namespace mysim {
-
-// Where a particle must go when it touches a static collider: the nearest point of the collider's
-// surface grown by its margin, and the outward normal there.
-struct SurfacePoint {
-  Vec3 point;
-  Vec3 normal;  // unit
-};
-
-// Whether a point lies inside another collider: a shape with several ways out (a box's faces)
-// takes the nearest one that does not lead into another collider (a box standing on the ground
-// must not push a node out through its bottom face, into the ground).
-using Blocked = std::function<bool(const Vec3&)>;
-
-// A collider's Coulomb friction ("friction": {"static": MU_S, "kinetic": MU_K} in a scene; both
-// 0, frictionless, when absent): mu_s >= mu_k >= 0.
-struct Friction {
-  double static_coefficient = 0.0;
-  double kinetic = 0.0;
-  bool any() const { return static_coefficient > 0.0 || kinetic > 0.0; }
-};
 
 // The contact every mysim integrator applies after a step (and external engines are told to
 // apply): the particle goes to the surface point and loses its inward normal velocity. Keeping
@@ -39,5 +21,12 @@ struct Friction {
 // with g (sin(theta) - mu_k cos(theta)) whatever the integrator (docs/contact.md derives both).
 void applyContact(const SurfacePoint& s, const Friction& friction, const Vec3& start,
                   Eigen::Ref<Vec3> x, Eigen::Ref<Vec3> v);
+
+// After a step: every free particle touching a collider goes onto its surface (applyContact),
+// colliders in the model's order, each avoiding exits into the others (a box's bottom face on
+// the ground), with the collider's friction against the particle's position when the step
+// began (`start`, 3N). Returns how many contacts were applied.
+int resolveContacts(const std::vector<Collider>& colliders, const std::vector<char>& pinned,
+                    Eigen::Ref<const Vector> start, Eigen::Ref<Vector> x, Eigen::Ref<Vector> v);
 
 }  // namespace mysim

@@ -3,7 +3,7 @@
 #include <optional>
 #include <string>
 
-#include "mysim/energy.h"
+#include "mysim/energy_terms.h"
 #include "mysim/state.h"
 
 namespace mysim {

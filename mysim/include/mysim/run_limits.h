@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "mysim/limit_error.h"
 #include "mysim/simulation.h"
 
 namespace mysim {
@@ -13,12 +14,6 @@ namespace mysim {
 // already 20 s, and a cloth's take days. More is a mistyped dt or duration (1e-320, 1e300), which
 // would otherwise overflow the step count.
 constexpr double kMaxSteps = 1e9;
-
-// Which field breaks a limit, and how.
-struct LimitError {
-  std::string field;  // "integrator.dt", "integrator.duration", "output.sample_interval", "system"
-  std::string message;
-};
 
 // The run of `particles` particles and `springs` springs with these settings: finite positive
 // dt <= duration, at most kMaxSteps steps, a finite sample interval, and an estimated memory

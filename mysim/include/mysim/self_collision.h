@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "mysim/model.h"
-#include "mysim/run_limits.h"
+#include "mysim/limit_error.h"
 
 namespace mysim {
 

@@ -3,7 +3,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "mysim/contact.h"
+#include "mysim/collider_surface.h"
 
 namespace mysim {
 

@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "mysim/model.h"
-#include "mysim/run_limits.h"
+#include "mysim/limit_error.h"
 
 namespace mysim {
 

@@ -8,7 +8,7 @@
 #include "mysim/particle_system.h"
 #include "mysim/spring_block_matrix.h"
 #include "mysim/ssor_conjugate_gradient.h"
-#include "run/parallel_threshold.h"
+#include "core/parallel_threshold.h"
 
 namespace mysim {
 namespace {

@@ -9,7 +9,7 @@
 #include "mysim/sparse_ldlt3.h"
 #include "integrators/pass_control.h"
 #include "mysim/spring_forces.h"
-#include "run/parallel_threshold.h"
+#include "core/parallel_threshold.h"
 
 namespace mysim {
 namespace {

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "solvers/vector_ops.h"
-#include "run/parallel_threshold.h"
+#include "core/parallel_threshold.h"
 
 namespace mysim {
 

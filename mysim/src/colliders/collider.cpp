@@ -60,30 +60,4 @@ nlohmann::json describeCollider(const Collider& c) {
   return j;
 }
 
-int resolveContacts(const std::vector<Collider>& colliders, const std::vector<char>& pinned,
-                    Eigen::Ref<const Vector> start, Eigen::Ref<Vector> x, Eigen::Ref<Vector> v) {
-  // Each collider's test for exits into the others, built once per call, not once per particle.
-  std::vector<Blocked> inside_another;
-  for (std::size_t k = 0; k < colliders.size(); ++k) {
-    inside_another.push_back([&colliders, k](const Vec3& point) {
-      for (std::size_t o = 0; o < colliders.size(); ++o) {
-        if (o != k && signedDistance(colliders[o], point) < 0.0) return true;
-      }
-      return false;
-    });
-  }
-  int contacts = 0;
-  for (int p = 0; p < static_cast<int>(pinned.size()); ++p) {
-    if (pinned[p]) continue;
-    for (std::size_t k = 0; k < colliders.size(); ++k) {
-      if (const auto s = contactPoint(colliders[k], x.segment<3>(3 * p), inside_another[k])) {
-        applyContact(*s, colliderFriction(colliders[k]), start.segment<3>(3 * p),
-                     x.segment<3>(3 * p), v.segment<3>(3 * p));
-        ++contacts;
-      }
-    }
-  }
-  return contacts;
-}
-
 }  // namespace mysim

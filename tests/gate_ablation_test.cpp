@@ -29,7 +29,10 @@ std::vector<GateTermEffect> ablateCableOverGround(const nlohmann::json& needs) {
   nlohmann::json scene = nlohmann::json::parse(in);
   scene["colliders"] = {{{"type", "plane"}, {"point", {0, -10, 0}}, {"normal", {0, 1, 0}}}};
   if (!needs.is_null()) scene["needs"] = needs;
-  const std::string path = testing::TempDir() + "/gated_cable_over_ground.json";
+  // A file per test: ctest runs this file's tests side by side, and one writing the other's scene
+  // while it is read made the pair fail now and then.
+  const std::string path = testing::TempDir() + "/gated_cable_over_ground_" +
+                           testing::UnitTest::GetInstance()->current_test_info()->name() + ".json";
   std::ofstream(path) << scene.dump();
   const std::string check = R"({"checks": [{"scene": ")" + path + R"(", "resolution": 10,
       "dt": 0.016, "engines": ["mysim:backward-euler"], "metric": "sag_lowest",

@@ -85,7 +85,7 @@ void ViewerSession::frameCamera() {
   const Eigen::Vector3d high = rows.leftCols<3>().colwise().maxCoeff();
   Eigen::Vector3d centre = 0.5 * (low + high);
   double size = std::max((high - low).norm(), 0.5);
-  if (model_.kind == mysim::SystemKind::Chain || model_.kind == mysim::SystemKind::Cloth) {
+  if (model_.hangsFromPins()) {
     // Things hang below their pins by about their own size: look a little lower.
     centre.y() -= 0.4 * size;
     size *= 1.4;

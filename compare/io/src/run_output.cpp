@@ -197,7 +197,7 @@ std::expected<void, std::string> writeRunFiles(const std::string& dir_name,
     if (!done) return done;
   }
 
-  if (model.kind == mysim::SystemKind::Cloth && (model.grid || !model.mesh_triangles.empty())) {
+  if (model.hasSurface()) {
     done = writeFileAtomically(in("final.obj"), [&](std::ostream& out) { writeFrameObj(out, model, last); });
     if (!done) return done;
   }

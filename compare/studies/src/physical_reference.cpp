@@ -20,10 +20,10 @@ PhysicalReference exact(std::string_view quantity, double value, const std::stri
   return r;
 }
 
-// A material chain pinned at its two ends, level under gravity: the continuous elastic
-// catenary's midspan sag.
+// A material chain (the one kind whose ends carry half a link's mass) pinned at its two ends,
+// level under gravity: the continuous elastic catenary's midspan sag.
 std::optional<double> levelCableSag(const mysim::Scene& scene) {
-  if (scene.kind != mysim::SystemKind::Chain || scene.chain_end_mass == 0.0) return std::nullopt;
+  if (scene.chain_end_mass == 0.0) return std::nullopt;
   const mysim::ChainShape& c = scene.chain;
   const double g = scene.gravity.norm();
   if (g == 0.0 || std::abs(c.direction.normalized().dot(scene.gravity / g)) > 1e-12 ||

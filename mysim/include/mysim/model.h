@@ -52,6 +52,10 @@ struct Model {
 
   int particleCount() const { return static_cast<int>(mass.size()); }
   bool isCircle() const { return kind == SystemKind::Circle; }
+  // A chain or a cloth: a body built to hang from its pins (explicit particles need not).
+  bool hangsFromPins() const { return kind == SystemKind::Chain || kind == SystemKind::Cloth; }
+  // A cloth with triangles (its grid's or its mesh's): a surface to draw, export or collide.
+  bool hasSurface() const { return grid.has_value() || !mesh_triangles.empty(); }
 };
 
 // The scene field a spring's parameter came from, for messages: "system.stiffness" (chain),

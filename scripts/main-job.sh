@@ -114,7 +114,7 @@ stage "stability cloth_hanging" $B stability --scene scenes/matched/cloth_hangin
 # (the command and its table: docs/performance.md "Passes to a tolerance").
 stage "stability large steps" $B stability --scene scenes/matched/cloth_hanging.json \
   --name cloth_hanging_large_steps \
-  --engines mysim:xpbd:substeps=1:iterations=10:tolerance=0,mysim:local-global:tolerance=0,mysim:vbd:tolerance=0:acceleration_rho=0,mysim:backward-euler \
+  --engines mysim:xpbd:substeps=1:iterations=10:tolerance=0,mysim:local-global:tolerance=0:acceleration_rho=0,mysim:vbd:tolerance=0:acceleration_rho=0,mysim:backward-euler \
   --stiffness-scales 1,100 \
   --mass-ratios 1,1e4 --max-h-omega 3000 --out "$OUT/stability" >/dev/null
 # Mesh refinement: the cantilever against the elastica, the flex-spring strip, the drape test,

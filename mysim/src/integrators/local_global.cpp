@@ -7,13 +7,13 @@
 #include "mysim/integrator.h"
 #include "mysim/particle_system.h"
 #include "mysim/sparse_ldlt3.h"
+#include "integrators/chebyshev.h"
 #include "integrators/pass_control.h"
 #include "mysim/spring_forces.h"
 #include "core/parallel_threshold.h"
 
 namespace mysim {
 namespace {
-
 
 // Liu, O'Brien, Liu, Kavan and Xiao, "Fast simulation of mass-spring systems" (SIGGRAPH Asia
 // 2013): the implicit-Euler step (implicit_euler_step.h) solved by block coordinate descent on
@@ -34,10 +34,11 @@ namespace {
 // particles are unknowns, a pinned neighbour's term (k + c/h) x_pin(t + h) moves to the
 // right-hand side. The matrix is factored once per scene and step size (SparseLdlt3); its time is
 // reported apart from stepping (StepCounts::setup_seconds). Colliders: the contacts after the
-// step, as every integrator (afterStep).
+// step, as every integrator (afterStep). Acceleration: Chebyshev over whole passes (Wang 2015,
+// integrators/chebyshev.h) after the floor's plain passes, with rho `acceleration_rho` (0: off).
 class LocalGlobal final : public Integrator {
  public:
-  explicit LocalGlobal(PassControl control) : control_(control) {}
+  LocalGlobal(PassControl control, double rho) : control_(control), chebyshev_(rho) {}
 
   StepCounts step(OdeSystem& system, State& s, double h) override {
     ParticleSystem& ps = *system.particles();
@@ -54,9 +55,14 @@ class LocalGlobal final : public Integrator {
     x_ = step_.target;
     int passes = 0;
     PassResidual measured;
+    // As VBD: with a tolerance, Chebyshev takes over after the floor's plain passes.
+    const int plain = control_.adaptive() ? control_.iterations : 0;
     do {
+      const bool accelerated = chebyshev_.enabled() && passes >= plain;
+      if (accelerated) chebyshev_.beforePass(x_);
       localStep(ps.model());
       globalStep(ps);
+      if (accelerated) chebyshev_.afterPass(passes - plain, x_);
       ++passes;
       if (control_.checksAfter(passes)) {
         measured = implicitEulerPassResidual(ps, step_, x_, residual_);
@@ -185,6 +191,7 @@ class LocalGlobal final : public Integrator {
   }
 
   PassControl control_;
+  ChebyshevAcceleration chebyshev_;
   double factored_h_ = 0.0;
   bool factored_ = false;
   SparseLdlt3 factor_;
@@ -201,7 +208,7 @@ class LocalGlobal final : public Integrator {
 }  // namespace
 
 std::unique_ptr<Integrator> makeLocalGlobal(const IntegratorSettings& s) {
-  return std::make_unique<LocalGlobal>(PassControl::from(s));
+  return std::make_unique<LocalGlobal>(PassControl::from(s), s.value("acceleration_rho"));
 }
 
 }  // namespace mysim

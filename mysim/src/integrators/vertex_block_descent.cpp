@@ -6,6 +6,7 @@
 #include "mysim/implicit_euler_step.h"
 #include "mysim/integrator.h"
 #include "mysim/particle_system.h"
+#include "integrators/chebyshev.h"
 #include "integrators/pass_control.h"
 
 namespace mysim {
@@ -46,7 +47,7 @@ class VertexBlockDescent final : public Integrator {
   };
 
  public:
-  VertexBlockDescent(PassControl control, double rho) : control_(control), rho_(rho) {}
+  VertexBlockDescent(PassControl control, double rho) : control_(control), chebyshev_(rho) {}
 
   StepCounts step(OdeSystem& system, State& s, double h) override {
     ParticleSystem& ps = *system.particles();
@@ -55,7 +56,6 @@ class VertexBlockDescent final : public Integrator {
     hinges_ = &ps.model().hinges;
     prepareImplicitEulerStep(ps, s, h, step_);
     initialGuess(ps, s, h);
-    double omega = 1.0;
     int passes = 0;
     PassResidual measured;
     // With a tolerance the floor's passes run plain and Chebyshev takes over after them: a step
@@ -63,10 +63,10 @@ class VertexBlockDescent final : public Integrator {
     // one, Chebyshev from the first pass (Chen 2024, the fixed-count form).
     const int plain = control_.adaptive() ? control_.iterations : 0;
     do {
-      const bool accelerated = rho_ > 0.0 && passes >= plain;
-      if (accelerated) previous_ = x_;
+      const bool accelerated = chebyshev_.enabled() && passes >= plain;
+      if (accelerated) chebyshev_.beforePass(x_);
       for (const Color& color : colors_) relaxColor(color);
-      if (accelerated) omega = accelerate(passes - plain, omega);
+      if (accelerated) chebyshev_.afterPass(passes - plain, x_);
       ++passes;
       if (control_.checksAfter(passes)) {
         measured = implicitEulerPassResidual(ps, step_, x_, residual_);
@@ -185,26 +185,15 @@ class VertexBlockDescent final : public Integrator {
     }
   }
 
-  // Chebyshev semi-iteration over whole passes: x = omega (x - x_{n-2}) + x_{n-2}.
-  double accelerate(int it, double omega) {
-    if (it == 0) omega = 1.0;
-    else if (it == 1) omega = 2.0 / (2.0 - rho_ * rho_);
-    else omega = 4.0 / (4.0 - rho_ * rho_ * omega);
-    if (it >= 1) x_ = omega * (x_ - before_previous_) + before_previous_;
-    before_previous_ = previous_;
-    return omega;
-  }
-
   static constexpr int kParallelVertices = 1024;  // below this, threads cost more than they save
   PassControl control_;
-  double rho_;
+  ChebyshevAcceleration chebyshev_;
   std::vector<Color> colors_;
   std::vector<Vertex> vertices_;  // free vertices in colour order, then one end marker
   std::vector<Incidence> incidences_;
   std::vector<HingeIncidence> hinge_incidences_;
   const std::vector<Hinge>* hinges_ = nullptr;  // the system's, this step
   Vector x_;                  // (3N) the iterate
-  Vector previous_, before_previous_;  // (3N) iterates one and two passes back (acceleration)
   Vector residual_;           // (3N) r(x) of implicit_euler_step.h, when measured
   Vector previous_velocity_;  // (3N) the last step's start velocity (initial guess)
   ImplicitEulerStep step_;

@@ -54,8 +54,7 @@ struct Facts {
 };
 
 // What one comparison says of each engine it ran.
-void addComparison(Facts& facts, const json& scene, const json& comparison) {
-  const json state = lastFrameState(comparison);
+void addComparison(Facts& facts, const json& scene, const json& comparison, const json& state) {
   const double window = state.value("last_frame", 0.0);
   // Energy is a conservation check only where nothing drives or damps the scene.
   const bool conservative =
@@ -93,8 +92,8 @@ void addComparison(Facts& facts, const json& scene, const json& comparison) {
   }
 }
 
-void addCloseness(Facts& facts, const json& comparison) {
-  if (lastFrameState(comparison)["state"] != "settled") return;
+void addCloseness(Facts& facts, const json& comparison, const json& state) {
+  if (state["state"] != "settled") return;
   if (comparison["model"].value("kind", "") != "cloth") return;
   for (const json& p : comparison["pairs"]) {
     const auto d = numberIn(p, "drape_max_mirror_aware") ? numberIn(p, "drape_max_mirror_aware")
@@ -160,14 +159,13 @@ void addClosest(json& v, const std::map<std::string, std::vector<double>>& dista
 
 }  // namespace
 
-json engineVerdicts(const json& comparisons, const json& stability_scenes) {
+json engineVerdicts(const std::vector<report_tables::LoadedComparison>& comparisons,
+                    const json& stability_scenes) {
   Facts facts;
-  for (const json& c : comparisons) {
+  for (const report_tables::LoadedComparison& c : comparisons) {
     if (c["group"] != "suite") continue;
-    const json j = readJson(c["folder"].get<std::string>() + "/comparison.json");
-    if (j.is_null()) continue;
-    addComparison(facts, c["scene"], j);
-    addCloseness(facts, j);
+    addComparison(facts, c["scene"], c.record, c.state);
+    addCloseness(facts, c.record, c.state);
   }
   std::map<std::string, json> rules = stepRules(stability_scenes);
   json list = json::array();

@@ -5,6 +5,9 @@
 // its worst momentum drift on a free body, its step rule on each mapped scene, the scenes it did
 // not finish cleanly. Each number with its cut: the scene and the time window it is over.
 #include <nlohmann/json.hpp>
+#include <vector>
+
+#include "report_tables.h"
 
 namespace springcheck {
 
@@ -14,8 +17,9 @@ namespace springcheck {
 inline constexpr double kTrustedRelativeError = 0.01;
 inline constexpr double kTrustedErrorAtRest = 1e-3;  // m
 
-// `comparisons`, `stability_scenes`: the manifest's entries (report_manifest.h).
-nlohmann::json engineVerdicts(const nlohmann::json& comparisons,
+// `comparisons`: the manifest's, read (report_tables.h); `stability_scenes`: its entries
+// (report_manifest.h).
+nlohmann::json engineVerdicts(const std::vector<report_tables::LoadedComparison>& comparisons,
                               const nlohmann::json& stability_scenes);
 
 }  // namespace springcheck

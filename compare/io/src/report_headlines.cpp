@@ -19,13 +19,13 @@ using namespace report_tables;
 // Final-frame distances mean a disagreement of rest shapes only where every engine has settled:
 // the largest there (mirror-aware: a fold buckled the other way is not a disagreement), and,
 // apart, the largest trajectory difference on cloths still moving or driven at the end.
-json clothDisagreements(const json& comparisons) {
+json clothDisagreements(const std::vector<LoadedComparison>& comparisons) {
   json rest, moving, states = json::object();
-  for (const json& c : comparisons) {
+  for (const LoadedComparison& c : comparisons) {
     if (c["group"] == "energy") continue;
-    const json j = readJson(c["folder"].get<std::string>() + "/comparison.json");
-    if (j.is_null() || j["model"].value("kind", "") != "cloth") continue;
-    const json state = lastFrameState(j);
+    const json& j = c.record;
+    if (j["model"].value("kind", "") != "cloth") continue;
+    const json& state = c.state;
     states[c["group"].get<std::string>() + "/" + c["scene"].get<std::string>()] = state;
     // The drape page draws every engine against the first: the headline's pair is one it shows.
     const json first = j["engines"].empty() ? json() : j["engines"][0]["engine"];
@@ -56,13 +56,13 @@ json clothDisagreements(const json& comparisons) {
 // closed form where the scene has one, else its distance to the scene's first engine (mysim at the
 // scene's integrator): the rest shape (mirror-aware) where every engine settled, the trajectory
 // otherwise; each scene marked settled, moving or driven.
-json ranking(const json& comparisons) {
+json ranking(const std::vector<LoadedComparison>& comparisons) {
   json scenes = json::array();
-  for (const json& c : comparisons) {
+  for (const LoadedComparison& c : comparisons) {
     if (c["group"] != "suite") continue;
-    const json j = readJson(c["folder"].get<std::string>() + "/comparison.json");
-    if (j.is_null() || j["engines"].empty()) continue;
-    const json state = lastFrameState(j);
+    const json& j = c.record;
+    if (j["engines"].empty()) continue;
+    const json& state = c.state;
     json values = json::object();
     std::string measure;
     bool closed = false;
@@ -99,12 +99,11 @@ json ranking(const json& comparisons) {
 
 // Each free body of the suite: its worst linear and its worst angular drift, each with its own
 // engine.
-json momentum(const json& comparisons) {
+json momentum(const std::vector<LoadedComparison>& comparisons) {
   json list = json::array();
-  for (const json& c : comparisons) {
+  for (const LoadedComparison& c : comparisons) {
     if (c["group"] != "suite") continue;
-    const json j = readJson(c["folder"].get<std::string>() + "/comparison.json");
-    if (j.is_null()) continue;
+    const json& j = c.record;
     json entry = {{"scene", c["scene"]}};
     for (const char* key : {"linear_momentum_drift", "angular_momentum_drift"}) {
       for (const json& e : j["engines"]) {
@@ -176,7 +175,9 @@ json stability(const json& stability_scenes) {
 
 }  // namespace
 
-json reportHeadlines(const json& comparisons, const json& stability_scenes) {
+json reportHeadlines(const json& comparison_entries, const json& stability_scenes) {
+  // Each comparison.json read once, for every headline below.
+  const std::vector<LoadedComparison> comparisons = loadComparisons(comparison_entries);
   const json cloths = clothDisagreements(comparisons);
   return {{"worst_cloth_drape", cloths["rest"]},
           {"worst_moving_cloth", cloths["moving"]},

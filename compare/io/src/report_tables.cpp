@@ -72,4 +72,15 @@ json lastFrameState(const json& comparison) {
   return {{"state", "settled"}, {"settled_at", settled}, {"last_frame", end}};
 }
 
+std::vector<LoadedComparison> loadComparisons(const json& comparisons) {
+  std::vector<LoadedComparison> loaded;
+  for (const json& c : comparisons) {
+    json record = readJson(c["folder"].get<std::string>() + "/comparison.json");
+    if (record.is_null()) continue;
+    json state = lastFrameState(record);
+    loaded.push_back({&c, std::move(record), std::move(state)});
+  }
+  return loaded;
+}
+
 }  // namespace springcheck::report_tables

@@ -28,4 +28,15 @@ double median(std::vector<double> v);
 // rests), or still moving at the end; with the last frame's time.
 nlohmann::json lastFrameState(const nlohmann::json& comparison);
 
+// A comparison the manifest lists, read once for every headline: its manifest entry (group,
+// scene, folder), its comparison.json and its state at the last frame.
+struct LoadedComparison {
+  const nlohmann::json* entry;
+  nlohmann::json record;
+  nlohmann::json state;
+  const nlohmann::json& operator[](const char* key) const { return (*entry)[key]; }
+};
+// Every comparison of the manifest whose comparison.json reads (the others are left out).
+std::vector<LoadedComparison> loadComparisons(const nlohmann::json& comparisons);
+
 }  // namespace springcheck::report_tables

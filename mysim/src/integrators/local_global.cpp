@@ -5,6 +5,7 @@
 
 #include "mysim/implicit_euler_step.h"
 #include "mysim/integrator.h"
+#include "mysim/local_global_matrix.h"
 #include "mysim/particle_system.h"
 #include "mysim/sparse_ldlt3.h"
 #include "integrators/chebyshev.h"
@@ -76,55 +77,18 @@ class LocalGlobal final : public Integrator {
   }
 
  private:
-  // Numbers the free particles and factors M~/h^2 + sum_s (k_s + c_s/h) over them; seconds.
+  // Numbers the free particles and factors the constant matrix (local_global_matrix.h); seconds.
   double factorFor(const ParticleSystem& ps, double h) {
     const auto start = std::chrono::steady_clock::now();
-    const Model& model = ps.model();
-    const int n = ps.particleCount();
-    free_index_.assign(n, -1);
-    free_particles_.clear();
-    for (int p = 0; p < n; ++p) {
-      if (!model.pinned[p]) {
-        free_index_[p] = static_cast<int>(free_particles_.size());
-        free_particles_.push_back(p);
-      }
-    }
-    std::vector<Eigen::Triplet<double>> entries;
-    for (int p : free_particles_) {
-      const double m_eff = model.mass[p] + h * model.drag;
-      entries.emplace_back(free_index_[p], free_index_[p], m_eff / (h * h));
-    }
-    weight_.resize(static_cast<Eigen::Index>(model.springs.size()));
-    for (int k = 0; k < static_cast<int>(model.springs.size()); ++k) {
-      const Spring& sp = model.springs[k];
-      weight_[k] = sp.stiffness + sp.damping / h;
-      const int a = free_index_[sp.i], b = free_index_[sp.j];
-      if (a >= 0) entries.emplace_back(a, a, weight_[k]);
-      if (b >= 0) entries.emplace_back(b, b, weight_[k]);
-      if (a >= 0 && b >= 0) entries.emplace_back(std::max(a, b), std::min(a, b), -weight_[k]);
-    }
-    // Hinges (hinge.h): their energy is quadratic, k w w^T per hinge, so it goes into the
-    // matrix exactly and needs no local step; a pinned hinge particle's column moves to the
-    // right-hand side (globalStep).
-    for (const Hinge& hinge : model.hinges) {
-      for (int a = 0; a < 4; ++a) {
-        const int fa = free_index_[hinge.particle[a]];
-        if (fa < 0) continue;
-        for (int c = 0; c < 4; ++c) {
-          const int fc = free_index_[hinge.particle[c]];
-          if (fc < 0 || fc > fa) continue;  // the lower triangle, as the springs'
-          entries.emplace_back(fa, fc, hinge.stiffness * hinge.weight[a] * hinge.weight[c]);
-        }
-      }
-    }
-    const int unknowns = static_cast<int>(free_particles_.size());
-    Eigen::SparseMatrix<double> matrix(unknowns, unknowns);
-    matrix.setFromTriplets(entries.begin(), entries.end());
+    LocalGlobalMatrix matrix = localGlobalMatrix(ps.model(), h);
+    free_index_ = std::move(matrix.free_index);
+    free_particles_ = std::move(matrix.free_particles);
+    weight_ = std::move(matrix.weight);
     std::string error;
-    factored_ = factor_.factor(matrix, error);
+    factored_ = factor_.factor(matrix.lower, error);
     factored_h_ = h;
-    scale_.resize(static_cast<Eigen::Index>(model.springs.size()));
-    rhs_.resize(3 * unknowns);
+    scale_.resize(weight_.size());
+    rhs_.resize(3 * static_cast<Eigen::Index>(free_particles_.size()));
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 

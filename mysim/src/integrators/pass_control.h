@@ -4,9 +4,10 @@
 // (h^2 k / m in the hundreds) ten passes leave most of the step unsolved, and an unsolved
 // implicit step can gain energy and blow up (measured: docs/performance.md "Passes to a
 // tolerance"). So after the `iterations` passes that always run, the solver goes on until its
-// residual is at most `tolerance` times the residual of the step's unsolved start (the inertial
-// prediction: the force imbalance the step has to remove), or `max_iterations` passes; a step
-// that stops at the cap counts a solver failure (the run reports it, as backward Euler's CG).
+// residual is at most `tolerance` times the forces acting (the largest of the step's load, its
+// inertial term and the springs' and hinges' forces: implicitEulerPassResidual, or XPBD's own
+// measure), or `max_iterations` passes; a step that stops at the cap counts a solver failure (the
+// run reports it, as backward Euler's CG).
 // tolerance 0 runs exactly `iterations` passes (the fixed-count form, for comparison).
 #include <algorithm>
 

@@ -6,7 +6,7 @@
 
 #include <sstream>
 
-#include "mysim/cloth_mesh.h"
+#include "mysim/cloth_surface.h"
 
 namespace mysim {
 namespace {

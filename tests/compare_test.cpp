@@ -21,7 +21,7 @@
 #include "compare/metrics/settling_metric.h"
 #include "compare/metrics/surface_distance.h"
 #include "mysim/cloth.h"
-#include "mysim/cloth_mesh.h"
+#include "mysim/cloth_surface.h"
 #include "mysim/scene_file.h"
 #include "source_root.h"
 

@@ -14,7 +14,7 @@
 #include <numbers>
 
 #include "mysim/cloth_material.h"
-#include "mysim/cloth_mesh.h"
+#include "mysim/cloth_surface.h"
 #include "mysim/energy.h"
 #include "mysim/integrator.h"
 #include "mysim/mesh_cloth.h"

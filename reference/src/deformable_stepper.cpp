@@ -12,7 +12,7 @@
 #include <BulletSoftBody/btSoftBodyRigidBodyCollisionConfiguration.h>
 
 #include "deformable_forces.h"
-#include "mysim/cloth_mesh.h"
+#include "mysim/cloth_surface.h"
 #include "engine_support.h"
 #include "soft_body.h"
 #include "static_collider.h"

@@ -1,6 +1,6 @@
 #include "engine_support.h"
 
-#include "mysim/cloth_mesh.h"
+#include "mysim/cloth_surface.h"
 
 namespace reference {
 

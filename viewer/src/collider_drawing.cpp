@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "mysim/cloth_mesh.h"
+#include "mysim/cloth_surface.h"
 
 namespace viewer {
 namespace {

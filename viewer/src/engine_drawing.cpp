@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "collider_drawing.h"
-#include "mysim/cloth_mesh.h"
+#include "mysim/cloth_surface.h"
 #include "mysim/particle_system.h"
 
 namespace viewer {

@@ -10,7 +10,7 @@
 #include <thread>
 
 #include "frame_drawing.h"
-#include "mysim/cloth_mesh.h"
+#include "mysim/cloth_surface.h"
 #include "mysim/particle_system.h"
 #include "png_writer.h"
 #include "text.h"

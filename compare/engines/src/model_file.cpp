@@ -8,7 +8,7 @@
 #include "compare/io/atomic_file.h"
 #include "compare/io/npy.h"
 #include "mysim/circle_system.h"
-#include "mysim/cloth_mesh.h"
+#include "mysim/cloth_surface.h"
 #include "mysim/particle_system.h"
 #include "mysim/wind.h"
 

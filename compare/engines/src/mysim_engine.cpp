@@ -20,12 +20,9 @@ Engine mysimEngine() {
                       config.source + ": integrator.name: " +
                           mysim::canonicalIntegratorName(config.integrator.name).error()});
     }
-    if (info->needs_particles && model.isCircle()) {
-      return std::unexpected(
-          EngineError{EngineError::Kind::Refused,
-                      config.source + ": mysim: integrator.name: '" + info->name +
-                          "' needs a particle system; the circle is a first-order ODE (use "
-                          "euler, trapezoidal, rk4 or dopri5)"});
+    if (auto refusal = mysim::circleRefusal(info->name); refusal && model.isCircle()) {
+      return std::unexpected(EngineError{
+          EngineError::Kind::Refused, config.source + ": mysim: integrator.name: " + *refusal});
     }
     EngineInstance instance;
     instance.system = mysim::makeSystem(model, config.limits);

@@ -11,7 +11,7 @@
 #include "compare/io/atomic_file.h"
 #include "compare/io/whole_folder.h"
 #include "compare/io/npy.h"
-#include "mysim/cloth_mesh.h"
+#include "mysim/cloth_surface.h"
 #include "mysim/state_hash.h"
 
 namespace springcheck {

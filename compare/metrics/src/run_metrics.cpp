@@ -8,7 +8,7 @@
 #include "compare/metrics/penetration_metric.h"
 #include "compare/metrics/sag_metric.h"
 #include "compare/metrics/settling_metric.h"
-#include "mysim/cloth_mesh.h"
+#include "mysim/cloth_surface.h"
 
 namespace springcheck {
 

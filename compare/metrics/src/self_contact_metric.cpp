@@ -5,7 +5,7 @@
 #include <cmath>
 #include <set>
 
-#include "mysim/cloth_mesh.h"
+#include "mysim/cloth_surface.h"
 #include "mysim/proximity.h"
 #include "mysim/self_collision.h"
 #include "mysim/spatial_grid.h"

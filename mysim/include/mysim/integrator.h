@@ -118,6 +118,11 @@ const std::vector<IntegratorInfo>& integratorCatalog();
 std::vector<std::string> integratorNames(bool fixed_step_only = false);
 const IntegratorInfo* findIntegrator(std::string_view name);  // by name or alias
 
+// Why `name` cannot step the circle (a first-order ODE, no particles: only the catalogue's rows
+// that do not need a particle system can), naming those that can; nothing if it can (or is not
+// in the catalogue: that is canonicalIntegratorName's refusal).
+std::optional<std::string> circleRefusal(std::string_view name);
+
 // Canonical name for a name or alias, or an error listing the valid ones.
 std::expected<std::string, std::string> canonicalIntegratorName(std::string_view name);
 

@@ -1,4 +1,6 @@
 #pragma once
+// A cloth built from a triangle mesh and its material. (A cloth model's surface, whatever built
+// it, is cloth_surface.h.)
 #include <expected>
 #include <string>
 

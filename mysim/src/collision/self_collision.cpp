@@ -5,7 +5,7 @@
 #include <set>
 #include <sstream>
 
-#include "mysim/cloth_mesh.h"
+#include "mysim/cloth_surface.h"
 #include "mysim/proximity.h"
 #include "mysim/spatial_grid.h"
 

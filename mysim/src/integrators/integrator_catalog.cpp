@@ -177,6 +177,21 @@ std::vector<std::string> integratorNames(bool fixed_step_only) {
   return names;
 }
 
+std::optional<std::string> circleRefusal(std::string_view name) {
+  const IntegratorInfo* info = findIntegrator(name);
+  if (info == nullptr || !info->needs_particles) return std::nullopt;
+  std::vector<std::string> able;
+  for (const IntegratorInfo& row : integratorCatalog()) {
+    if (!row.needs_particles) able.push_back(row.name);
+  }
+  std::string list;
+  for (std::size_t k = 0; k < able.size(); ++k) {
+    list += (k == 0 ? "" : k + 1 == able.size() ? " or " : ", ") + able[k];
+  }
+  return "'" + info->name + "' needs a particle system; the circle is a first-order ODE (use " +
+         list + ")";
+}
+
 const char* familyName(IntegratorFamily family) {
   switch (family) {
     case IntegratorFamily::Explicit:

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "mysim/cloth_mesh.h"
+#include "mysim/cloth_surface.h"
 
 namespace mysim {
 

@@ -84,14 +84,9 @@ void checkWhole(Scene& scene) {
     if (!any_free)
       throw FieldError{"system.particles", "every particle is pinned: nothing would move"};
   }
-  if (scene.kind == SystemKind::Circle && scene.integrator.name != "") {
-    for (const IntegratorInfo& info : integratorCatalog()) {
-      if (info.name == scene.integrator.name && info.needs_particles) {
-        throw FieldError{"integrator.name",
-                         "'" + info.name +
-                             "' needs a particle system; the circle is a "
-                             "first-order ODE (use euler, trapezoidal, rk4, dopri5)"};
-      }
+  if (scene.kind == SystemKind::Circle) {
+    if (auto refusal = circleRefusal(scene.integrator.name)) {
+      throw FieldError{"integrator.name", *refusal};
     }
   }
 }

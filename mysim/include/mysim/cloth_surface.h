@@ -1,4 +1,6 @@
 #pragma once
+// The surface of a cloth model: its triangles (a grid's or a mesh's), vertex normals and OBJ
+// output. (Building a cloth from a triangle mesh is mesh_cloth.h.)
 #include <Eigen/Core>
 #include <ostream>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "mysim/cloth_mesh.h"
+#include "mysim/cloth_surface.h"
 
 namespace mysim {
 

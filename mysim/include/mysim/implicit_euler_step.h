@@ -44,9 +44,14 @@ double stepLoad(const ParticleSystem& ps, double t);
 // particles are from balancing. (Not |r(y~)|, the residual of the prediction: at large steps
 // the prediction's own stretch, h^2 g on stiff springs, is hundreds of times the weight, so a
 // bound against it loosens with the step, not with anything physical.)
+// `round_off`: the smallest residual the iterate can show in floating point, 64 ulps of the
+// inertial term's parts (m~/h^2 |x|: r subtracts y~ from x, which costs eps |x| per particle):
+// a settled scene with no load (an oscillator at rest) has forces acting that shrink toward zero,
+// and a tolerance of them would ask for a residual below its own round-off.
 struct PassResidual {
   double residual = 0.0;
   double forces = 0.0;
+  double round_off = 0.0;
 };
 PassResidual implicitEulerPassResidual(const ParticleSystem& ps, const ImplicitEulerStep& step,
                                        const Vector& x, Vector& r);

@@ -1,6 +1,7 @@
 #include "mysim/implicit_euler_step.h"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 
 namespace mysim {
@@ -73,14 +74,17 @@ PassResidual implicitEulerPassResidual(const ParticleSystem& ps, const ImplicitE
                                        const Vector& x, Vector& r) {
   implicitEulerResidual(ps, step, x, r);  // inertia + springs + hinges
   const Model& model = ps.model();
-  double inertia = 0.0, springs = 0.0;
+  double inertia = 0.0, springs = 0.0, scale = 0.0;
   for (int p = 0; p < ps.particleCount(); ++p) {
     if (model.pinned[p]) continue;
     const Vec3 a = step.mass_over_h2[p] * (x.segment<3>(3 * p) - step.target.segment<3>(3 * p));
     inertia += a.squaredNorm();
     springs += (r.segment<3>(3 * p) - a).squaredNorm();
+    scale += (step.mass_over_h2[p] * x.segment<3>(3 * p)).squaredNorm();
   }
-  return {r.norm(), std::max({step.load, std::sqrt(inertia), std::sqrt(springs)})};
+  constexpr double kRoundOffUlps = 64.0;
+  return {r.norm(), std::max({step.load, std::sqrt(inertia), std::sqrt(springs)}),
+          kRoundOffUlps * std::numeric_limits<double>::epsilon() * std::sqrt(scale)};
 }
 
 void finishImplicitEulerStep(OdeSystem& system, const ImplicitEulerStep& step, const Vector& x,

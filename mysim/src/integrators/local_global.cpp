@@ -68,8 +68,8 @@ class LocalGlobal final : public Integrator {
       if (control_.checksAfter(passes)) {
         measured = implicitEulerPassResidual(ps, step_, x_, residual_);
       }
-    } while (!control_.stopAfter(passes, measured.residual, measured.forces));
-    if (!control_.reachedTolerance(measured.residual, measured.forces)) counts.solver_failures = 1;
+    } while (!control_.stopAfter(passes, measured.residual, measured.forces, measured.round_off));
+    if (!control_.reachedTolerance(measured.residual, measured.forces, measured.round_off)) counts.solver_failures = 1;
     counts.derivative_evaluations = passes;
     counts.linear_iterations = passes;
     finishImplicitEulerStep(system, step_, x_, s);

@@ -30,14 +30,15 @@ struct PassControl {
   bool adaptive() const { return tolerance > 0.0; }
   // Whether the residual needs measuring after pass `done` (1-based).
   bool checksAfter(int done) const { return adaptive() && done >= iterations; }
-  // After pass `done`: whether to stop, given the residual (when checksAfter) and its reference.
-  bool stopAfter(int done, double residual, double reference) const {
+  // After pass `done`: whether to stop, given the residual (when checksAfter), its reference and
+  // the residual's round-off floor (a residual at it is as solved as the arithmetic allows).
+  bool stopAfter(int done, double residual, double reference, double floor = 0.0) const {
     if (done < iterations) return false;
     if (!adaptive()) return true;
-    return residual <= tolerance * reference || done >= max_iterations;
+    return reachedTolerance(residual, reference, floor) || done >= max_iterations;
   }
-  bool reachedTolerance(double residual, double reference) const {
-    return !adaptive() || residual <= tolerance * reference;
+  bool reachedTolerance(double residual, double reference, double floor = 0.0) const {
+    return !adaptive() || residual <= std::max(tolerance * reference, floor);
   }
 };
 

@@ -71,13 +71,13 @@ class VertexBlockDescent final : public Integrator {
       if (control_.checksAfter(passes)) {
         measured = implicitEulerPassResidual(ps, step_, x_, residual_);
       }
-    } while (!control_.stopAfter(passes, measured.residual, measured.forces));
+    } while (!control_.stopAfter(passes, measured.residual, measured.forces, measured.round_off));
     previous_velocity_ = s.y.tail(3 * n);
     finishImplicitEulerStep(system, step_, x_, s);
     return {.accepted = 1,
             .derivative_evaluations = passes,
             .linear_iterations = passes,
-            .solver_failures = control_.reachedTolerance(measured.residual, measured.forces) ? 0 : 1};
+            .solver_failures = control_.reachedTolerance(measured.residual, measured.forces, measured.round_off) ? 0 : 1};
   }
 
  private:

@@ -65,6 +65,13 @@ IntegratorParameter passTolerance(const char* fallback) {
           "the forces acting; 0: exactly `iterations` passes",
           true, 0.0, 0.5, false};
 }
+// Chebyshev acceleration (integrators/chebyshev.h) of local/global's and VBD's passes; each family
+// says why its default is that number.
+IntegratorParameter accelerationRho(const char* fallback) {
+  return {"acceleration_rho", fallback,
+          "Chebyshev acceleration's spectral radius estimate, in [0, 1); 0 turns it off", true, 0.0,
+          0.999, false};
+}
 const IntegratorParameter kMaxPasses = {
     "max_iterations", "1000", "most passes per step (per substep) when tolerance > 0; a step that "
     "stops there counts a solver failure", true, 1, 1000000, true};
@@ -93,18 +100,14 @@ const std::vector<IntegratorParameter> kLocalGlobalParameters = {
     // at 1/60 s reach 1 % where plain passes stop at the 1000-pass cap (cusick_drape 409 -> 62
     // passes a step); 0.99 takes fewer passes than 0.995 but on the stiffest (cloth_stiff and the
     // strips at 1/60 s).
-    {"acceleration_rho", "0.99",
-     "Chebyshev acceleration's spectral radius estimate, in [0, 1); 0 turns it off", true, 0.0,
-     0.999, false}};
+    accelerationRho("0.99")};
 const std::vector<IntegratorParameter> kVbdParameters = {
     {"iterations", "10", "passes over the vertices per step", true, 1, 10000, true},
     passTolerance("1e-3"), kMaxPasses,
     // 0.95 measured (docs/performance.md): on the 32 x 32 cloth at 1/60 s it cuts the passes to
     // 0.1 % 3.3 times (126 to 38 a step), on the cantilever 2 to 3 times with fewer steps at the
     // cap, the same settled shape within 1e-6 m; 0.98 overshoots (more passes than none).
-    {"acceleration_rho", "0.95",
-     "Chebyshev acceleration's spectral radius estimate, in [0, 1); 0 turns it off", true, 0.0,
-     0.999, false}};
+    accelerationRho("0.95")};
 const std::vector<IntegratorParameter> kAdaptiveParameters = {
     {"abs_tolerance", "1e-6", "per-component absolute error bound per step"},
     {"rel_tolerance", "1e-6", "relative error bound per step"}};

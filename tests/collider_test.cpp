@@ -8,6 +8,7 @@
 // ctest-label: unit
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "mysim/collider.h"
@@ -124,6 +125,55 @@ TEST(Colliders, SceneFileRefusesAnUnknownTypeAndABadBoxNamingTheField) {
   auto extra = parseScene(head + R"([{"type": "plane", "point": [0, 0, 0], "radius": 1}]})", "c.json");
   ASSERT_FALSE(extra);
   EXPECT_NE(extra.error().find("colliders[0].radius"), std::string::npos) << extra.error();
+}
+
+// Every shape of the variant, default-made: the tests below hold for any shape added to it.
+template <std::size_t... I>
+std::vector<Collider> everyShape(std::index_sequence<I...>) {
+  return {Collider(std::variant_alternative_t<I, Collider>{})...};
+}
+std::vector<Collider> everyShape() {
+  return everyShape(std::make_index_sequence<std::variant_size_v<Collider>>{});
+}
+
+TEST(ColliderDrawing, EveryShapesQuadsLieOnItsSurfaceLessTheInsetFacingOut) {
+  SurfaceDrawing drawing{Vec3(-0.5, 1.5, -0.5), Vec3(0.5, 2.5, 0.5), 0.0};
+  for (double inset : {0.0, 0.1}) {
+    drawing.inset = inset;
+    for (const Collider& c : everyShape()) {
+      SCOPED_TRACE(std::string(colliderType(c)) + " inset " + std::to_string(inset));
+      const SurfaceMesh mesh = surfaceMesh(c, drawing);
+      ASSERT_FALSE(mesh.quads.empty());
+      ASSERT_EQ(mesh.points.size(), mesh.normals.size());
+      // A flat shape (its normal the same everywhere) is drawn at its surface: flat triangles
+      // on it do not cut into it.
+      const bool flat = std::all_of(mesh.normals.begin(), mesh.normals.end(),
+                                    [&](const Vec3& n) { return n.isApprox(mesh.normals[0]); });
+      for (std::size_t k = 0; k < mesh.points.size(); ++k) {
+        EXPECT_NEAR(signedDistance(c, mesh.points[k]), flat ? 0.0 : -inset, 1e-12) << "point " << k;
+        EXPECT_NEAR(mesh.normals[k].norm(), 1.0, 1e-12);
+        EXPECT_GT(signedDistance(c, mesh.points[k] + 1e-3 * mesh.normals[k]),
+                  signedDistance(c, mesh.points[k]));
+      }
+      for (const std::array<int, 4>& q : mesh.quads) {  // counter-clockwise seen from outside
+        const Vec3 turn = (mesh.points[q[2]] - mesh.points[q[0]]).cross(mesh.points[q[3]] - mesh.points[q[1]]);
+        EXPECT_GT(turn.dot(mesh.normals[q[0]] + mesh.normals[q[2]]), 0.0);
+      }
+    }
+  }
+}
+
+TEST(ColliderDrawing, APlaneIsDrawnUnderTheMiddleOfWhatIsDrawnWithIt) {
+  const Plane ground{Vec3(0, 1, 0), Vec3::UnitY(), 0.01};
+  const SurfaceMesh mesh = surfaceMesh(ground, SurfaceDrawing{Vec3(2, 3, -1), Vec3(4, 5, 1), 0.0});
+  Vec3 low = Vec3::Constant(1e9), high = Vec3::Constant(-1e9);
+  for (const Vec3& p : mesh.points) {
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+  EXPECT_TRUE((0.5 * (low + high)).isApprox(Vec3(3, 1, 0)));  // below (3, 4, 0)
+  // 1.2 times the diagonal of the 2 x 2 x 2 box wide: sqrt(12) * 1.2 across.
+  EXPECT_NEAR(high.x() - low.x(), 1.2 * std::sqrt(12.0), 1e-12);
 }
 
 }  // namespace

@@ -65,6 +65,23 @@ std::string safeDirName(std::string engine) {
   return engine;
 }
 
+// A collider as the report draws it: its description and its surface's quads (under the cloth's
+// start, for an endless shape), so the report names no shape.
+json colliderJson(const mysim::Collider& c, const mysim::Model& model) {
+  mysim::SurfaceDrawing drawing;
+  const Eigen::Map<const Eigen::Matrix3Xd> start(model.start_position.data(), 3,
+                                                  model.start_position.size() / 3);
+  if (start.cols() > 0) {
+    drawing.low = start.rowwise().minCoeff();
+    drawing.high = start.rowwise().maxCoeff();
+  }
+  const mysim::SurfaceMesh mesh = mysim::surfaceMesh(c, drawing);
+  json j = describeCollider(c);
+  j["surface"] = {{"points", json::array()}, {"quads", mesh.quads}};
+  for (const mysim::Vec3& p : mesh.points) j["surface"]["points"].push_back({p.x(), p.y(), p.z()});
+  return j;
+}
+
 // What a reader of the tables needs to know of the model (the report draws the colliders, picks the
 // energy view for undamped or damped scenes, and draws cloths as meshes).
 json modelJson(const mysim::Model& model) {
@@ -80,7 +97,7 @@ json modelJson(const mysim::Model& model) {
             {"driven", model.wind.has_value() || model.pin_motion.has_value()},
             {"colliders", json::array()},
             {"grid", json()}};
-  for (const mysim::Collider& c : model.colliders) j["colliders"].push_back(describeCollider(c));
+  for (const mysim::Collider& c : model.colliders) j["colliders"].push_back(colliderJson(c, model));
   if (model.grid) j["grid"] = {{"rows", model.grid->rows}, {"cols", model.grid->cols}};
   if (model.self_collision_thickness) j["self_collision"] = {{"thickness", *model.self_collision_thickness}};
   return j;

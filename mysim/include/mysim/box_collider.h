@@ -31,4 +31,7 @@ std::optional<SurfacePoint> contactPoint(const Box& box, const Vec3& x);
 // nearest of all if every one is).
 std::optional<SurfacePoint> contactPoint(const Box& box, const Vec3& x, const Blocked& blocked);
 
+// Its drawing: its six faces, each half extent less the inset.
+SurfaceMesh surfaceMesh(const Box& box, const SurfaceDrawing& drawing);
+
 }  // namespace mysim

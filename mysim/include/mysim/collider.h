@@ -1,9 +1,10 @@
 #pragma once
 // The static colliders a model holds, any number of each. A collider is a plain struct with free
 // functions (its file: mysim/<shape>_collider.h): signed distance, the contact point on its
-// surface grown by its margin, and reading from / describing to JSON. Adding a shape: its file,
-// one name in the variant below, its Bullet twin (reference/src/static_collider.cpp) and its
-// drawing (viewer/src/collider_drawing.cpp); everything else goes through this header.
+// surface grown by its margin, its surface as quads to draw, and reading from / describing to
+// JSON. Adding a shape: its file pair, one name in the variant below, and its Bullet twin
+// (reference/src/static_collider.cpp); everything else (the viewer, the report, the model file)
+// goes through this header.
 #include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <variant>
@@ -31,6 +32,9 @@ inline double signedDistance(const Collider& c, const Vec3& x) {
 }
 inline std::optional<SurfacePoint> contactPoint(const Collider& c, const Vec3& x) {
   return std::visit([&](const auto& shape) { return contactPoint(shape, x); }, c);
+}
+inline SurfaceMesh surfaceMesh(const Collider& c, const SurfaceDrawing& drawing) {
+  return std::visit([&](const auto& shape) { return surfaceMesh(shape, drawing); }, c);
 }
 // With a test for exits that lead into another collider (only a box has a choice of exits).
 inline std::optional<SurfacePoint> contactPoint(const Collider& c, const Vec3& x,

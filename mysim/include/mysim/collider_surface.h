@@ -1,7 +1,9 @@
 #pragma once
 // What a collider shape answers about a point near it, and the friction it carries: the types each
 // shape's file and the contact (mysim/contact.h) share.
+#include <array>
 #include <functional>
+#include <vector>
 
 #include "mysim/types.h"
 
@@ -25,6 +27,34 @@ struct Friction {
   double static_coefficient = 0.0;
   double kinetic = 0.0;
   bool any() const { return static_coefficient > 0.0 || kinetic > 0.0; }
+};
+
+// A collider's surface as flat quads, for drawing it (the viewer's shaded view, the report's
+// wire frames and outlines): a sphere's quads run along its parallels and meridians, a box's are
+// its faces. Each corner has its outward normal (a curved shape shades smoothly).
+struct SurfaceMesh {
+  std::vector<Vec3> points;
+  std::vector<Vec3> normals;             // one per point, unit, outward
+  std::vector<std::array<int, 4>> quads;  // counter-clockwise seen from outside
+  void addQuad(const std::array<Vec3, 4>& corners, const Vec3& normal) {
+    const int first = static_cast<int>(points.size());
+    for (const Vec3& p : corners) {
+      points.push_back(p);
+      normals.push_back(normal);
+    }
+    quads.push_back({first, first + 1, first + 2, first + 3});
+  }
+};
+
+// What a drawing is for: the box around what is drawn with the collider (a cloth), which an
+// endless shape (a plane) is drawn under, and how far inside its true surface to draw it (flat
+// triangles between nodes resting on a curved or edged surface cut into it; drawn at its true
+// size it would show through the cloth where no node is inside: docs/viewer.md). A shape is
+// never drawn smaller than half its size.
+struct SurfaceDrawing {
+  Vec3 low = Vec3::Zero();
+  Vec3 high = Vec3::Zero();
+  double inset = 0.0;  // m
 };
 
 }  // namespace mysim

@@ -26,4 +26,8 @@ struct Plane {
 double signedDistance(const Plane& plane, const Vec3& x);
 std::optional<SurfacePoint> contactPoint(const Plane& plane, const Vec3& x);
 
+// Its drawing: a square of it under the drawing's box, centred below its middle and 1.2 times
+// as wide as the box's diagonal (at least 0.5 m), in 4 x 4 quads; flat, so never inset.
+SurfaceMesh surfaceMesh(const Plane& plane, const SurfaceDrawing& drawing);
+
 }  // namespace mysim

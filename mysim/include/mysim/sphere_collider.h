@@ -27,4 +27,7 @@ double signedDistance(const Sphere& sphere, const Vec3& x);
 // The point of radius + margin nearest to x, when x is inside it.
 std::optional<SurfacePoint> contactPoint(const Sphere& sphere, const Vec3& x);
 
+// Its drawing: parallels and meridians on the radius less the inset.
+SurfaceMesh surfaceMesh(const Sphere& sphere, const SurfaceDrawing& drawing);
+
 }  // namespace mysim

@@ -72,4 +72,27 @@ std::optional<SurfacePoint> contactPoint(const Box& box, const Vec3& x, const Bl
   return exits.front().surface;
 }
 
+SurfaceMesh surfaceMesh(const Box& box, const SurfaceDrawing& drawing) {
+  const Vec3 half =
+      box.half_extents.array() - std::min(drawing.inset, 0.5 * box.half_extents.minCoeff());
+  SurfaceMesh mesh;
+  for (int axis = 0; axis < 3; ++axis) {
+    const int u = (axis + 1) % 3, w = (axis + 2) % 3;  // e_u x e_w = e_axis
+    for (double side : {-1.0, 1.0}) {
+      const Vec3 n = side * Vec3::Unit(axis);
+      std::array<Vec3, 4> corners;
+      int k = 0;
+      for (const auto& [a, b] : {std::pair{-1, -1}, std::pair{1, -1}, std::pair{1, 1}, std::pair{-1, 1}}) {
+        Vec3 p = box.center + half[axis] * n;
+        p[u] += a * half[u];
+        p[w] += b * half[w];
+        corners[side > 0 ? k : 3 - k] = p;  // the far face turned round: outward either way
+        ++k;
+      }
+      mesh.addQuad(corners, n);
+    }
+  }
+  return mesh;
+}
+
 }  // namespace mysim

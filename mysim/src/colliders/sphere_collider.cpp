@@ -1,5 +1,6 @@
 #include "mysim/sphere_collider.h"
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
@@ -35,6 +36,27 @@ std::optional<SurfacePoint> contactPoint(const Sphere& sphere, const Vec3& x) {
   // A particle exactly at the centre has no outward direction: push it up (+y).
   const Vec3 n = r > 0.0 ? Vec3(d / r) : Vec3::UnitY();
   return SurfacePoint{sphere.center + surface * n, n};
+}
+
+SurfaceMesh surfaceMesh(const Sphere& sphere, const SurfaceDrawing& drawing) {
+  const double radius = std::max(0.5 * sphere.radius, sphere.radius - drawing.inset);
+  const int stacks = 16, slices = 32;
+  SurfaceMesh mesh;
+  for (int i = 0; i <= stacks; ++i) {
+    const double polar = M_PI * i / stacks;  // from +y
+    for (int j = 0; j <= slices; ++j) {
+      const double around = 2 * M_PI * j / slices;
+      const Vec3 n(std::sin(polar) * std::cos(around), std::cos(polar),
+                   std::sin(polar) * std::sin(around));
+      mesh.points.push_back(sphere.center + radius * n);
+      mesh.normals.push_back(n);
+    }
+  }
+  const auto at = [&](int i, int j) { return i * (slices + 1) + j; };
+  for (int i = 0; i < stacks; ++i) {
+    for (int j = 0; j < slices; ++j) mesh.quads.push_back({at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i + 1, j)});
+  }
+  return mesh;
 }
 
 }  // namespace mysim

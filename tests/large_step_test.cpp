@@ -4,11 +4,15 @@
 // mysim/src/integrators/pass_control.h; XPBD in ten substeps) each must run these scenes whole
 // and settle where backward Euler settles. The cloth's 12 s runs take seconds in Release and
 // minutes under the sanitizers (releaseonly: in the quick tier, out of the sanitizer pass, which
-// runs the same solver code on the cantilever); so do the Chebyshev steps solved to 1e-6 (29 s
+// runs the same solver code, passes to a tolerance and Chebyshev steps, on the hinge strip of
+// HingeBending.EveryIntegratorFamily... and the oscillator of PassTolerance); so do the Chebyshev steps solved to 1e-6 (29 s
 // and 18 s under the sanitizers, 1.4 s and 0.6 s in Release; the cantilever's runs accelerate too).
 // ctest-label: physics
 // ctest-label LargeStepCloth: physics,releaseonly
 // ctest-label ChebyshevStep: physics,releaseonly
+// releaseonly: 86 CPU-s under the sanitizers; hinges in every family meet them there in
+// HingeBending.EveryIntegratorFamilySettlesTheSameStripUnderASmallLoad.
+// ctest-label LargeStepCantilever: physics,releaseonly
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -3,6 +3,9 @@
 // the shipped cable, the recommended setup, run again on its own, is within the bound of the
 // closed form computed here from the scene's numbers.
 // ctest-label: physics
+// releaseonly: the two unseen cantilevers are 83 CPU-s under the sanitizers; the answer's code
+// (the same study, setups and rerun) meets them there on the cable.
+// ctest-label TradeAnswerOnUnseenCantilevers: physics,releaseonly
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -68,7 +71,7 @@ const TradeAxes kStripAxes{
     {4, 8, 16}, {"mysim"}, {"backward-euler", "xpbd:substeps=1:iterations=10:tolerance=0"}, {0.008}};
 
 // Load w L^3 / B = 0.79: the tip drops 10 % of the overhang (near the small-deflection beam).
-TEST(TradeAnswer, AnUnseenLightlyLoadedCantileverIsWithinTheBound) {
+TEST(TradeAnswerOnUnseenCantilevers, ALightlyLoadedOneIsWithinTheBound) {
   const double L = 0.06, w = 0.15 * 9.8, B = 4e-4;
   const std::string scene = strip("strip_small", L, 0.02, 0.15, B, 1500, 400);
   expectRecommendedWithinOnePercent(scene, "tip_drop", heavyElastica(w * L * L * L / B).drop * L,
@@ -76,7 +79,7 @@ TEST(TradeAnswer, AnUnseenLightlyLoadedCantileverIsWithinTheBound) {
 }
 
 // Load 20: the tip drops 83 % of the overhang (the large-deflection elastica).
-TEST(TradeAnswer, AnUnseenHeavilyLoadedCantileverIsWithinTheBound) {
+TEST(TradeAnswerOnUnseenCantilevers, AHeavilyLoadedOneIsWithinTheBound) {
   const double L = 0.12, w = 0.3 * 9.8, B = 2.5e-4;
   const std::string scene = strip("strip_large", L, 0.03, 0.3, B, 800, 250);
   expectRecommendedWithinOnePercent(scene, "tip_drop", heavyElastica(w * L * L * L / B).drop * L,

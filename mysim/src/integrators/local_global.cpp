@@ -8,8 +8,7 @@
 #include "mysim/local_global_matrix.h"
 #include "mysim/particle_system.h"
 #include "mysim/sparse_ldlt3.h"
-#include "integrators/chebyshev.h"
-#include "integrators/pass_control.h"
+#include "integrators/accelerated_passes.h"
 #include "mysim/spring_forces.h"
 #include "core/parallel_threshold.h"
 
@@ -54,22 +53,12 @@ class LocalGlobal final : public Integrator {
     }
     prepareImplicitEulerStep(ps, s, h, step_);
     x_ = step_.target;
-    int passes = 0;
-    PassResidual measured;
-    // As VBD: with a tolerance, Chebyshev takes over after the floor's plain passes.
-    const int plain = control_.adaptive() ? control_.iterations : 0;
-    do {
-      const bool accelerated = chebyshev_.enabled() && passes >= plain;
-      if (accelerated) chebyshev_.beforePass(x_);
+    const PassesRun run = runAcceleratedPasses(control_, chebyshev_, ps, step_, x_, residual_, [&] {
       localStep(ps.model());
       globalStep(ps);
-      if (accelerated) chebyshev_.afterPass(passes - plain, x_);
-      ++passes;
-      if (control_.checksAfter(passes)) {
-        measured = implicitEulerPassResidual(ps, step_, x_, residual_);
-      }
-    } while (!control_.stopAfter(passes, measured.residual, measured.forces, measured.round_off));
-    if (!control_.reachedTolerance(measured.residual, measured.forces, measured.round_off)) counts.solver_failures = 1;
+    });
+    const int passes = run.passes;
+    if (!run.converged) counts.solver_failures = 1;
     counts.derivative_evaluations = passes;
     counts.linear_iterations = passes;
     finishImplicitEulerStep(system, step_, x_, s);

@@ -6,8 +6,7 @@
 #include "mysim/implicit_euler_step.h"
 #include "mysim/integrator.h"
 #include "mysim/particle_system.h"
-#include "integrators/chebyshev.h"
-#include "integrators/pass_control.h"
+#include "integrators/accelerated_passes.h"
 
 namespace mysim {
 namespace {
@@ -56,28 +55,15 @@ class VertexBlockDescent final : public Integrator {
     hinges_ = &ps.model().hinges;
     prepareImplicitEulerStep(ps, s, h, step_);
     initialGuess(ps, s, h);
-    int passes = 0;
-    PassResidual measured;
-    // With a tolerance the floor's passes run plain and Chebyshev takes over after them: a step
-    // done by then (small steps, soft springs) is not slowed by a rho above its own; without
-    // one, Chebyshev from the first pass (Chen 2024, the fixed-count form).
-    const int plain = control_.adaptive() ? control_.iterations : 0;
-    do {
-      const bool accelerated = chebyshev_.enabled() && passes >= plain;
-      if (accelerated) chebyshev_.beforePass(x_);
+    const PassesRun run = runAcceleratedPasses(control_, chebyshev_, ps, step_, x_, residual_, [&] {
       for (const Color& color : colors_) relaxColor(color);
-      if (accelerated) chebyshev_.afterPass(passes - plain, x_);
-      ++passes;
-      if (control_.checksAfter(passes)) {
-        measured = implicitEulerPassResidual(ps, step_, x_, residual_);
-      }
-    } while (!control_.stopAfter(passes, measured.residual, measured.forces, measured.round_off));
+    });
     previous_velocity_ = s.y.tail(3 * n);
     finishImplicitEulerStep(system, step_, x_, s);
     return {.accepted = 1,
-            .derivative_evaluations = passes,
-            .linear_iterations = passes,
-            .solver_failures = control_.reachedTolerance(measured.residual, measured.forces, measured.round_off) ? 0 : 1};
+            .derivative_evaluations = run.passes,
+            .linear_iterations = run.passes,
+            .solver_failures = run.converged ? 0 : 1};
   }
 
  private:

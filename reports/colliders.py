@@ -38,6 +38,11 @@ def draw_3d(ax, colliders, cloth):
     return np.vstack(drawn)
 
 
+def _turn(o, a, b):
+    """The z of (a - o) x (b - o): positive when o, a, b turn counter-clockwise."""
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
+
 def _hull(points):
     """The convex hull of 2D points, counter-clockwise (Andrew's monotone chain)."""
     pts = sorted(set(map(tuple, np.round(points, 12))))
@@ -47,7 +52,7 @@ def _hull(points):
     def half(seq):
         out = []
         for p in seq:
-            while len(out) >= 2 and np.cross(np.subtract(out[-1], out[-2]), np.subtract(p, out[-2])) <= 0:
+            while len(out) >= 2 and _turn(out[-2], out[-1], p) <= 0:
                 out.pop()
             out.append(p)
         return out[:-1]

@@ -3,6 +3,7 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <array>
 
 #include "mysim/cloth_surface.h"
 
@@ -14,16 +15,23 @@ const float kColliderColour[3] = {0.55f, 0.6f, 0.7f};
 // The points of a flat triangle that dip deepest into a surface its corners rest on: its
 // centroid, its edges' midpoints, and its circumcentre when that lies inside it (an acute
 // triangle's corners on a sphere: the circumcentre is the point nearest the centre).
-std::vector<Eigen::Vector3d> deepestCandidates(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                                               const Eigen::Vector3d& c) {
-  std::vector<Eigen::Vector3d> points = {(a + b + c) / 3, (a + b) / 2, (b + c) / 2, (c + a) / 2};
+struct Candidates {
+  std::array<Eigen::Vector3d, 5> points;
+  int count = 4;
+  const Eigen::Vector3d* begin() const { return points.data(); }
+  const Eigen::Vector3d* end() const { return points.data() + count; }
+};
+Candidates deepestCandidates(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  Candidates found;
+  found.points = {(a + b + c) / 3, (a + b) / 2, (b + c) / 2, (c + a) / 2, Eigen::Vector3d::Zero()};
   const Eigen::Vector3d ab = b - a, ac = c - a, normal = ab.cross(ac);
   const bool acute = ab.dot(ac) > 0 && (a - b).dot(c - b) > 0 && (a - c).dot(b - c) > 0;
   if (acute && normal.squaredNorm() > 0) {
-    points.push_back(a + (ac.squaredNorm() * normal.cross(ab) + ab.squaredNorm() * ac.cross(normal)) /
-                             (2 * normal.squaredNorm()));
+    found.points[found.count++] =
+        a + (ac.squaredNorm() * normal.cross(ab) + ab.squaredNorm() * ac.cross(normal)) /
+                (2 * normal.squaredNorm());
   }
-  return points;
+  return found;
 }
 
 // How deep the cloth's flat triangles cut into the collider's true surface beyond their corners
@@ -50,11 +58,9 @@ double clothInset(const mysim::Collider& collider, const mysim::Model& model,
 
 void drawCollider(const mysim::Collider& collider, const mysim::Model& model,
                   const Eigen::Matrix<double, Eigen::Dynamic, 6>& rows) {
-  mysim::SurfaceDrawing drawing;
-  drawing.low = rows.leftCols<3>().colwise().minCoeff().transpose();
-  drawing.high = rows.leftCols<3>().colwise().maxCoeff().transpose();
-  drawing.inset = clothInset(collider, model, rows);
-  const mysim::SurfaceMesh mesh = mysim::surfaceMesh(collider, drawing);
+  const Eigen::Matrix3Xd positions = rows.leftCols<3>().transpose();
+  const mysim::SurfaceMesh mesh = mysim::surfaceMesh(
+      collider, mysim::drawingAround(positions, clothInset(collider, model, rows)));
   glColor3f(kColliderColour[0], kColliderColour[1], kColliderColour[2]);
   glBegin(GL_QUADS);
   for (const std::array<int, 4>& quad : mesh.quads) {

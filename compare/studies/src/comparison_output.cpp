@@ -65,16 +65,9 @@ std::string safeDirName(std::string engine) {
   return engine;
 }
 
-// A collider as the report draws it: its description and its surface's quads (under the cloth's
-// start, for an endless shape), so the report names no shape.
-json colliderJson(const mysim::Collider& c, const mysim::Model& model) {
-  mysim::SurfaceDrawing drawing;
-  const Eigen::Map<const Eigen::Matrix3Xd> start(model.start_position.data(), 3,
-                                                  model.start_position.size() / 3);
-  if (start.cols() > 0) {
-    drawing.low = start.rowwise().minCoeff();
-    drawing.high = start.rowwise().maxCoeff();
-  }
+// A collider as the report draws it: its description and its surface's quads (an endless shape
+// under the cloth's start: `drawing`), so the report names no shape.
+json colliderJson(const mysim::Collider& c, const mysim::SurfaceDrawing& drawing) {
   const mysim::SurfaceMesh mesh = mysim::surfaceMesh(c, drawing);
   json j = describeCollider(c);
   j["surface"] = {{"points", json::array()}, {"quads", mesh.quads}};
@@ -97,7 +90,9 @@ json modelJson(const mysim::Model& model) {
             {"driven", model.wind.has_value() || model.pin_motion.has_value()},
             {"colliders", json::array()},
             {"grid", json()}};
-  for (const mysim::Collider& c : model.colliders) j["colliders"].push_back(colliderJson(c, model));
+  const mysim::SurfaceDrawing drawing = mysim::drawingAround(
+      Eigen::Map<const Eigen::Matrix3Xd>(model.start_position.data(), 3, model.start_position.size() / 3), 0.0);
+  for (const mysim::Collider& c : model.colliders) j["colliders"].push_back(colliderJson(c, drawing));
   if (model.grid) j["grid"] = {{"rows", model.grid->rows}, {"cols", model.grid->cols}};
   if (model.self_collision_thickness) j["self_collision"] = {{"thickness", *model.self_collision_thickness}};
   return j;

@@ -56,5 +56,10 @@ struct SurfaceDrawing {
   Vec3 high = Vec3::Zero();
   double inset = 0.0;  // m
 };
+// A drawing around points (3 x N; none: around the origin), `inset` inside the true surface.
+inline SurfaceDrawing drawingAround(const Eigen::Ref<const Eigen::Matrix3Xd>& points, double inset) {
+  if (points.cols() == 0) return {Vec3::Zero(), Vec3::Zero(), inset};
+  return {points.rowwise().minCoeff(), points.rowwise().maxCoeff(), inset};
+}
 
 }  // namespace mysim

@@ -65,7 +65,7 @@ TEST_P(ClothOnSphere, NeverEntersTheSphereAndComesToRestWithoutJitter) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ExplicitAndImplicit, ClothOnSphere,
-                         ::testing::Values("rk4", "symplectic-euler", "backward-euler"),
+                         ::testing::Values("rk4", "symplectic-euler", "backward-euler", "local-global", "vbd"),
                          testing::IntegratorParamName());
 
 }  // namespace

@@ -1,4 +1,5 @@
 #pragma once
+#include <optional>
 #include <vector>
 
 #include "mysim/collider.h"
@@ -21,6 +22,26 @@ namespace mysim {
 // with g (sin(theta) - mu_k cos(theta)) whatever the integrator (docs/contact.md derives both).
 void applyContact(const SurfacePoint& s, const Friction& friction, const Vec3& start,
                   Eigen::Ref<Vec3> x, Eigen::Ref<Vec3> v);
+
+// Whether a point is inside any collider but the k-th, for each k: the exits a collider's
+// contact must avoid (Blocked), built once for a pass over the particles.
+std::vector<Blocked> insideAnotherCollider(const std::vector<Collider>& colliders);
+
+// Where a particle at x first touches a collider (the model's order, as resolveContacts takes
+// them): the surface point the contact pass puts it on and the collider's index; none if it
+// touches none. `inside_another` from insideAnotherCollider.
+struct FirstContact {
+  SurfacePoint surface;
+  std::size_t collider = 0;
+};
+std::optional<FirstContact> firstContact(const std::vector<Collider>& colliders,
+                                         const std::vector<Blocked>& inside_another, const Vec3& x);
+
+// Coulomb's law on what a normal projection removed (applyContact's, above): `pushed` (m, the
+// normal displacement put back) and `stopped` (m/s, the inward normal velocity taken away), on
+// the slide of x since `start` and the tangential part of v, n the surface's unit normal.
+void applyFriction(const Friction& friction, const Vec3& n, double pushed, double stopped,
+                   const Vec3& start, Eigen::Ref<Vec3> x, Eigen::Ref<Vec3> v);
 
 // After a step: every free particle touching a collider goes onto its surface (applyContact),
 // colliders in the model's order, each avoiding exits into the others (a box's bottom face on

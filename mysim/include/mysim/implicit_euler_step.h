@@ -11,6 +11,7 @@
 //          + sum_s (c_s / h) u_s u_s^T (dx_i - dx_j)
 // (dx = x - x0; u_s the spring's direction at x; the last term is spring damping at v1). Without
 // spring damping r is the gradient of 1/(2 h^2) |x - y~|^2_M~ + E(x) (Liu et al. 2013, eq. 6).
+#include "mysim/contact_holds.h"
 #include "mysim/particle_system.h"
 #include "mysim/state.h"
 
@@ -21,6 +22,7 @@ struct ImplicitEulerStep {
   double t_end = 0.0;
   Vector x0;              // (3N) positions at the step's start
   Vector target;          // (3N) y~ for free particles, the pin's position at t + h for pinned
+  ContactHolds holds;     // the particles held on a collider (contact_holds.h)
   Vector mass_over_h2;    // (N) m~ / h^2
   double load = 0.0;      // stepLoad at t + h, summed while the target is made
 };
@@ -29,7 +31,7 @@ struct ImplicitEulerStep {
 void prepareImplicitEulerStep(const ParticleSystem& ps, const State& s, double h,
                               ImplicitEulerStep& step);
 
-// r(x) above (3N, pinned rows zero).
+// r(x) above (3N, pinned rows zero, held particles without their normal part).
 void implicitEulerResidual(const ParticleSystem& ps, const ImplicitEulerStep& step,
                            const Vector& x, Vector& r);
 
@@ -60,5 +62,11 @@ PassResidual implicitEulerPassResidual(const ParticleSystem& ps, const ImplicitE
 // their path with their velocity, contacts).
 void finishImplicitEulerStep(OdeSystem& system, const ImplicitEulerStep& step, const Vector& x,
                              State& s);
+
+// One round of contact holds (contact_holds.h) on the step's result x, for a re-solve; whether
+// any particle was newly held.
+inline bool holdContacts(const ParticleSystem& ps, ImplicitEulerStep& step, Vector& x) {
+  return step.holds.hold(ps, step.x0, step.h, x) > 0;
+}
 
 }  // namespace mysim

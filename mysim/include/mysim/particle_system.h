@@ -64,6 +64,12 @@ class ParticleSystem final : public OdeSystem {
   Vec3 pinPosition(int particle, double t) const;
   Vec3 pinVelocity(double t) const;
 
+  bool hasSelfCollision() const { return self_collision_.has_value(); }
+  // Self-collision's pass (self_collision.h) on positions x and velocities v of a step that
+  // began at `start`, as afterStep runs it before the colliders'; nothing without it.
+  void selfContactPass(Eigen::Ref<const Vector> start, Eigen::Ref<Vector> x,
+                       Eigen::Ref<Vector> v) const;
+
   // Largest |l / rest - 1| over all springs.
   double maxStrain(Eigen::Ref<const Vector> x) const;
 

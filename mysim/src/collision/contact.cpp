@@ -8,8 +8,8 @@ namespace {
 // The part of u across the unit normal n.
 Vec3 tangential(const Vec3& u, const Vec3& n) { return u - u.dot(n) * n; }
 
-// Coulomb's law on what the normal projection removed: `pushed` (m, the normal displacement put
-// back) and `stopped` (m/s, the inward normal velocity taken away).
+}  // namespace
+
 void applyFriction(const Friction& friction, const Vec3& n, double pushed, double stopped,
                    const Vec3& start, Eigen::Ref<Vec3> x, Eigen::Ref<Vec3> v) {
   const Vec3 slid = tangential(x - start, n);
@@ -28,8 +28,6 @@ void applyFriction(const Friction& friction, const Vec3& n, double pushed, doubl
   if (speed > 0.0) v -= vt * std::min(1.0, friction.kinetic * stopped / speed);
 }
 
-}  // namespace
-
 void applyContact(const SurfacePoint& s, const Friction& friction, const Vec3& start,
                   Eigen::Ref<Vec3> x, Eigen::Ref<Vec3> v) {
   const double pushed = std::max(0.0, (s.point - x).dot(s.normal));
@@ -39,9 +37,7 @@ void applyContact(const SurfacePoint& s, const Friction& friction, const Vec3& s
   if (friction.any()) applyFriction(friction, s.normal, pushed, std::max(0.0, -vn), start, x, v);
 }
 
-int resolveContacts(const std::vector<Collider>& colliders, const std::vector<char>& pinned,
-                    Eigen::Ref<const Vector> start, Eigen::Ref<Vector> x, Eigen::Ref<Vector> v) {
-  // Each collider's test for exits into the others, built once per call, not once per particle.
+std::vector<Blocked> insideAnotherCollider(const std::vector<Collider>& colliders) {
   std::vector<Blocked> inside_another;
   for (std::size_t k = 0; k < colliders.size(); ++k) {
     inside_another.push_back([&colliders, k](const Vec3& point) {
@@ -51,6 +47,20 @@ int resolveContacts(const std::vector<Collider>& colliders, const std::vector<ch
       return false;
     });
   }
+  return inside_another;
+}
+
+std::optional<FirstContact> firstContact(const std::vector<Collider>& colliders,
+                                         const std::vector<Blocked>& inside_another, const Vec3& x) {
+  for (std::size_t k = 0; k < colliders.size(); ++k) {
+    if (const auto s = contactPoint(colliders[k], x, inside_another[k])) return FirstContact{*s, k};
+  }
+  return std::nullopt;
+}
+
+int resolveContacts(const std::vector<Collider>& colliders, const std::vector<char>& pinned,
+                    Eigen::Ref<const Vector> start, Eigen::Ref<Vector> x, Eigen::Ref<Vector> v) {
+  const std::vector<Blocked> inside_another = insideAnotherCollider(colliders);
   int contacts = 0;
   for (int p = 0; p < static_cast<int>(pinned.size()); ++p) {
     if (pinned[p]) continue;

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "mysim/conjugate_gradient.h"
+#include "mysim/contact_holds.h"
 #include "mysim/integrator.h"
 #include "mysim/particle_system.h"
 #include "mysim/spring_block_matrix.h"
@@ -20,7 +21,8 @@ namespace {
 // df/dx uses each spring's elastic Jacobian with the compressive term clamped (SPD, see
 // spring.h); df/dv holds spring damping and drag. Solved by preconditioned conjugate gradient
 // over the free particles only (SpringBlockMatrix): pinned velocities are known, so their
-// columns move to the right-hand side. First order; unconditionally stable on an oscillator,
+// columns move to the right-hand side. Particles the step puts inside a collider are held on it
+// and the step solved again (mysim/contact_holds.h, holdContacts below). First order; unconditionally stable on an oscillator,
 // where the amplitude shrinks by 1/sqrt(1 + (h w)^2) a step.
 class BackwardEuler final : public Integrator {
  public:
@@ -33,6 +35,7 @@ class BackwardEuler final : public Integrator {
     const int n = ps.particleCount(), n3 = 3 * n;
     if (!matrix_) numberFreeParticles(ps);
 
+    v0_ = s.y.tail(n3);
     const auto x = s.y.head(n3);
     const auto v = s.y.tail(n3);
     f_.resize(n3);
@@ -47,37 +50,12 @@ class BackwardEuler final : public Integrator {
     fillSprings(ps, x, v, h);
     fillRows(ps, h);
     if (!model.hinges.empty()) addHinges(ps, v, h);
-    const SpringBlockMatrix& A = *matrix_;
-    CgResult cg;
-    if (!model.hinges.empty()) {
-      // The hinges' constant blocks beside the springs' (addHinges); SSOR sweeps the spring
-      // matrix's own storage, so hinge scenes take block Jacobi (the scene reader refuses ssor).
-      matrix_->factorDiagonal(true);
-      cg = conjugateGradient(
-          [this, &A, &ps, h](const Vector& in, Vector& out) {
-            A.multiply(in, out);
-            multiplyHinges(ps, h, in, out);
-          },
-          [&A](const Vector& r, Vector& z) { A.applyDiagonalInverse(r, z); }, rhs_, dv_free_,
-          tolerance_, max_iterations_);
-    } else if (preconditionerFor(h) == CgPreconditioner::Ssor) {
-      matrix_->prepareSsor(kSsorOmega);
-      cg = ssorConjugateGradient(A, rhs_, dv_free_, tolerance_, max_iterations_);
-    } else {
-      matrix_->factorDiagonal(preconditionerFor(h) == CgPreconditioner::BlockJacobi);
-      cg = conjugateGradient([&A](const Vector& in, Vector& out) { A.multiply(in, out); },
-                             [&A](const Vector& r, Vector& z) { A.applyDiagonalInverse(r, z); },
-                             rhs_, dv_free_, tolerance_, max_iterations_);
-    }
+    const CgResult cg = solve(ps, h);
     StepCounts counts{.accepted = 1, .derivative_evaluations = 1};
     counts.linear_iterations = cg.iterations;
     if (!cg.converged) counts.solver_failures = 1;
-
-    for (int p = 0; p < n; ++p) {
-      const Vec3 dv = free_index_[p] >= 0 ? Vec3(dv_free_.segment<3>(3 * free_index_[p]))
-                                          : Vec3(dv_known_.segment<3>(3 * p));
-      s.y.segment<3>(n3 + 3 * p) += dv;
-    }
+    endVelocities(ps, s);
+    if (holdContacts(ps, h, s, counts)) endVelocities(ps, s);
     s.y.head(n3) += h * s.y.tail(n3);
     s.t += h;
     system.afterStep(s);
@@ -85,6 +63,106 @@ class BackwardEuler final : public Integrator {
   }
 
  private:
+  // The step's linear system A dv = b, solved for dv_free_ (warm-started from the last step's).
+  CgResult solve(const ParticleSystem& ps, double h) {
+    const SpringBlockMatrix& A = *matrix_;
+    if (!ps.model().hinges.empty()) {
+      // The hinges' constant blocks beside the springs' (addHinges); SSOR sweeps the spring
+      // matrix's own storage, so hinge scenes take block Jacobi (the scene reader refuses ssor).
+      matrix_->factorDiagonal(true);
+      return conjugateGradient([this, &ps, h](const Vector& in, Vector& out) { multiply(ps, h, in, out); },
+                               [&A](const Vector& r, Vector& z) { A.applyDiagonalInverse(r, z); },
+                               rhs_, dv_free_, tolerance_, max_iterations_);
+    }
+    if (preconditionerFor(h) == CgPreconditioner::Ssor) {
+      matrix_->prepareSsor(kSsorOmega);
+      return ssorConjugateGradient(A, rhs_, dv_free_, tolerance_, max_iterations_);
+    }
+    matrix_->factorDiagonal(preconditionerFor(h) == CgPreconditioner::BlockJacobi);
+    return conjugateGradient([&A](const Vector& in, Vector& out) { A.multiply(in, out); },
+                             [&A](const Vector& r, Vector& z) { A.applyDiagonalInverse(r, z); },
+                             rhs_, dv_free_, tolerance_, max_iterations_);
+  }
+
+  // out = A in: the springs' blocks and, with hinges, theirs.
+  void multiply(const ParticleSystem& ps, double h, const Vector& in, Vector& out) const {
+    matrix_->multiply(in, out);
+    if (!ps.model().hinges.empty()) multiplyHinges(ps, h, in, out);
+  }
+
+  // v1 = v0 + dv: the solved dv of free particles, the known one of pinned.
+  void endVelocities(const ParticleSystem& ps, State& s) const {
+    const int n = ps.particleCount(), n3 = 3 * n;
+    for (int p = 0; p < n; ++p) {
+      const Vec3 dv = free_index_[p] >= 0 ? Vec3(dv_free_.segment<3>(3 * free_index_[p]))
+                                          : Vec3(dv_known_.segment<3>(3 * p));
+      s.y.segment<3>(n3 + 3 * p) = v0_.segment<3>(3 * p) + dv;
+    }
+  }
+
+  // Contacts inside the step (mysim/contact_holds.h): rounds of holds on x1 = x0 + h v1, each
+  // re-solving the system with the held particles' velocity constrained (solveHeld); whether
+  // any particle was held (s then holds the first solve's v1).
+  bool holdContacts(const ParticleSystem& ps, double h, const State& s, StepCounts& counts) {
+    if (ps.model().colliders.empty() && !ps.hasSelfCollision()) return false;
+    const int n = ps.particleCount();
+    const Vector x0 = s.y.head(3 * n);
+    x1_ = x0 + h * s.y.tail(3 * n);
+    holds_.clear(n);
+    bool held = false;
+    for (int round = 0; round < kContactRounds && holds_.hold(ps, x0, h, x1_) > 0; ++round) {
+      held = true;
+      const CgResult cg = solveHeld(ps, h, x0);
+      counts.linear_iterations += cg.iterations;
+      counts.solver_failures = cg.converged ? 0 : 1;  // the last solve's
+      for (int p = 0; p < n; ++p) {
+        if (free_index_[p] < 0) continue;
+        x1_.segment<3>(3 * p) = x0.segment<3>(3 * p) +
+                                h * (v0_.segment<3>(3 * p) + dv_free_.segment<3>(3 * free_index_[p]));
+      }
+    }
+    return held;
+  }
+
+  // A dv = b with each held particle's dv constrained to land it on its hold (its normal part,
+  // or all of it when held whole): dv = S y + z, z the constrained part, S the filter onto what
+  // is left free, and S A S y = S (b - A z) by conjugate gradient with the filtered block
+  // Jacobi preconditioner (Baraff and Witkin 1998, sec. 5.3, "modified PCG").
+  CgResult solveHeld(const ParticleSystem& ps, double h, const Vector& x0) {
+    filters_.clear();
+    constrained_.setZero(rhs_.size());
+    for (const ContactHold& hold : holds_.all()) {
+      const int p = hold.particle, i = free_index_[p];
+      const Vec3 landing = (hold.point - x0.segment<3>(3 * p)) / h - v0_.segment<3>(3 * p);
+      const Mat3 free_part = hold.whole ? Mat3(Mat3::Zero())
+                                        : Mat3(Mat3::Identity() - hold.normal * hold.normal.transpose());
+      filters_.push_back({i, free_part});
+      constrained_.segment<3>(3 * i) = landing - free_part * landing;
+    }
+    const auto filter = [this](Vector& u) {
+      for (const auto& [row, free_part] : filters_) u.segment<3>(3 * row) = free_part * u.segment<3>(3 * row);
+    };
+    multiply(ps, h, constrained_, filtered_rhs_);
+    filtered_rhs_ = rhs_ - filtered_rhs_;
+    filter(filtered_rhs_);
+    Vector y = dv_free_ - constrained_;
+    filter(y);
+    const SpringBlockMatrix& A = *matrix_;
+    matrix_->factorDiagonal(true);
+    // The tolerance against the whole system's right-hand side, as the first solve's: b - A z
+    // cancels to almost nothing on a cloth at rest, and a residual relative to that would sit
+    // below round-off (measured: CG then ran to its limit and kicked the resting cloth).
+    const double filtered_norm = filtered_rhs_.norm();
+    const double tolerance =
+        filtered_norm > 0.0 ? tolerance_ * std::max(1.0, rhs_.norm() / filtered_norm) : tolerance_;
+    const CgResult cg = conjugateGradient(
+        [&](const Vector& in, Vector& out) { multiply(ps, h, in, out), filter(out); },
+        [&](const Vector& r, Vector& z) { A.applyDiagonalInverse(r, z), filter(z); },
+        filtered_rhs_, y, tolerance, max_iterations_);
+    dv_free_ = y + constrained_;
+    return cg;
+  }
+
   // SSOR's relaxation factor, measured on the hanging cloth at h = 1/60 s: iterations fall from
   // w = 1 (symmetric Gauss-Seidel) to their fewest between 1.4 and 1.7 at 128 x 128, where 1.7
   // is already worse at 32 x 32 (docs/performance.md).
@@ -233,6 +311,12 @@ class BackwardEuler final : public Integrator {
   std::optional<SpringBlockMatrix> matrix_;
   std::vector<Vec3> stiffness_term_;  // (S) h^2 J (v_j - v_i) of each spring, this step
   Vector f_, dv_known_, rhs_, dv_free_;
+  Vector v0_;  // (3N) the step's start velocities
+  // Contact holds (mysim/contact_holds.h): the holds, x1 of the last solve, each held row's
+  // filter onto its free part, and the held part of dv.
+  ContactHolds holds_;
+  Vector x1_, constrained_, filtered_rhs_;
+  std::vector<std::pair<int, Mat3>> filters_;
   double tolerance_;
   int max_iterations_;
   CgPreconditioner preconditioner_;

@@ -15,6 +15,7 @@ void prepareImplicitEulerStep(const ParticleSystem& ps, const State& s, double h
   step.x0 = s.y.head(3 * n);
   step.target.resize(3 * n);
   step.mass_over_h2.resize(n);
+  step.holds.clear(n);
   const Vector zero_velocity = Vector::Zero(3 * n);  // external force without its drag term
   double load_squared = 0.0;
   for (int p = 0; p < n; ++p) {
@@ -57,6 +58,7 @@ void implicitEulerResidual(const ParticleSystem& ps, const ImplicitEulerStep& st
   for (int p = 0; p < n; ++p) {
     if (model.pinned[p]) r.segment<3>(3 * p).setZero();
   }
+  step.holds.removeReactions(r);
 }
 
 double stepLoad(const ParticleSystem& ps, double t) {
@@ -73,10 +75,9 @@ double stepLoad(const ParticleSystem& ps, double t) {
 PassResidual implicitEulerPassResidual(const ParticleSystem& ps, const ImplicitEulerStep& step,
                                        const Vector& x, Vector& r) {
   implicitEulerResidual(ps, step, x, r);  // inertia + springs + hinges
-  const Model& model = ps.model();
   double inertia = 0.0, springs = 0.0, scale = 0.0;
   for (int p = 0; p < ps.particleCount(); ++p) {
-    if (model.pinned[p]) continue;
+    if (ps.model().pinned[p]) continue;
     const Vec3 a = step.mass_over_h2[p] * (x.segment<3>(3 * p) - step.target.segment<3>(3 * p));
     inertia += a.squaredNorm();
     springs += (r.segment<3>(3 * p) - a).squaredNorm();

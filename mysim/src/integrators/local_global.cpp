@@ -9,6 +9,7 @@
 #include "mysim/particle_system.h"
 #include "mysim/sparse_ldlt3.h"
 #include "integrators/accelerated_passes.h"
+#include "integrators/held_global_matrix.h"
 #include "mysim/spring_forces.h"
 #include "core/parallel_threshold.h"
 
@@ -33,8 +34,10 @@ namespace {
 // Drag folds into M~ and y~ exactly (implicit_euler_step.h). Pins are eliminated: only free
 // particles are unknowns, a pinned neighbour's term (k + c/h) x_pin(t + h) moves to the
 // right-hand side. The matrix is factored once per scene and step size (SparseLdlt3); its time is
-// reported apart from stepping (StepCounts::setup_seconds). Colliders: the contacts after the
-// step, as every integrator (afterStep). Acceleration: Chebyshev over whole passes (Wang 2015,
+// reported apart from stepping (StepCounts::setup_seconds). Colliders: particles the solve puts
+// inside one are held on its surface and the step solved again (mysim/contact_holds.h), with
+// the holds' matrix factored per round (held_global_matrix.h, counted in the step's time); the
+// contacts after the step as every integrator (afterStep). Acceleration: Chebyshev over whole passes (Wang 2015,
 // integrators/chebyshev.h) after the floor's plain passes, with rho `acceleration_rho` (0: off).
 class LocalGlobal final : public Integrator {
  public:
@@ -53,19 +56,30 @@ class LocalGlobal final : public Integrator {
     }
     prepareImplicitEulerStep(ps, s, h, step_);
     x_ = step_.target;
-    const PassesRun run = runAcceleratedPasses(control_, chebyshev_, ps, step_, x_, residual_, [&] {
-      localStep(ps.model());
-      globalStep(ps);
-    });
-    const int passes = run.passes;
+    PassesRun run = solve(ps);
+    for (int round = 0; round < kContactRounds && holdContacts(ps, step_, x_); ++round) {
+      if (!held_matrix_.factor(lower_, free_index_, step_.holds)) {
+        run.converged = false;
+        break;
+      }
+      const PassesRun again = solve(ps);
+      run = {run.passes + again.passes, again.converged};
+    }
     if (!run.converged) counts.solver_failures = 1;
-    counts.derivative_evaluations = passes;
-    counts.linear_iterations = passes;
+    counts.derivative_evaluations = run.passes;
+    counts.linear_iterations = run.passes;
     finishImplicitEulerStep(system, step_, x_, s);
     return counts;
   }
 
  private:
+  PassesRun solve(const ParticleSystem& ps) {
+    return runAcceleratedPasses(control_, chebyshev_, ps, step_, x_, residual_, [&] {
+      localStep(ps.model());
+      globalStep(ps);
+    });
+  }
+
   // Numbers the free particles and factors the constant matrix (local_global_matrix.h); seconds.
   double factorFor(const ParticleSystem& ps, double h) {
     const auto start = std::chrono::steady_clock::now();
@@ -75,6 +89,7 @@ class LocalGlobal final : public Integrator {
     weight_ = std::move(matrix.weight);
     std::string error;
     factored_ = factor_.factor(matrix.lower, error);
+    lower_ = std::move(matrix.lower);
     factored_h_ = h;
     scale_.resize(weight_.size());
     rhs_.resize(3 * static_cast<Eigen::Index>(free_particles_.size()));
@@ -137,7 +152,12 @@ class LocalGlobal final : public Integrator {
       }
       rhs_.segment<3>(3 * f) = b;
     }
-    factor_.solve(rhs_);
+    if (step_.holds.empty()) {
+      factor_.solve(rhs_);
+    } else {
+      held_matrix_.addHoldTerms(rhs_);
+      held_matrix_.solve(rhs_);
+    }
     for (int f = 0; f < unknowns; ++f) {
       x_.segment<3>(3 * free_particles_[f]) = rhs_.segment<3>(3 * f);
     }
@@ -148,6 +168,8 @@ class LocalGlobal final : public Integrator {
   double factored_h_ = 0.0;
   bool factored_ = false;
   SparseLdlt3 factor_;
+  Eigen::SparseMatrix<double> lower_;  // the constant matrix factor_ holds, for the held one
+  HeldGlobalMatrix held_matrix_;       // this step's holds: its matrix with them
   std::vector<int> free_index_;      // (N) unknown of each free particle, -1 if pinned
   std::vector<int> free_particles_;  // (F) particle of each unknown
   Vector weight_;                    // (S) k + c/h: each spring's matrix weight

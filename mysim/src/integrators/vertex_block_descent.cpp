@@ -55,9 +55,11 @@ class VertexBlockDescent final : public Integrator {
     hinges_ = &ps.model().hinges;
     prepareImplicitEulerStep(ps, s, h, step_);
     initialGuess(ps, s, h);
-    const PassesRun run = runAcceleratedPasses(control_, chebyshev_, ps, step_, x_, residual_, [&] {
-      for (const Color& color : colors_) relaxColor(color);
-    });
+    PassesRun run = solve(ps);
+    for (int round = 0; round < kContactRounds && holdContacts(ps, step_, x_); ++round) {
+      const PassesRun again = solve(ps);
+      run = {run.passes + again.passes, again.converged};
+    }
     previous_velocity_ = s.y.tail(3 * n);
     finishImplicitEulerStep(system, step_, x_, s);
     return {.accepted = 1,
@@ -67,6 +69,12 @@ class VertexBlockDescent final : public Integrator {
   }
 
  private:
+  PassesRun solve(const ParticleSystem& ps) {
+    return runAcceleratedPasses(control_, chebyshev_, ps, step_, x_, residual_, [&] {
+      for (const Color& color : colors_) relaxColor(color);
+    });
+  }
+
   void initialGuess(const ParticleSystem& ps, const State& s, double h) {
     const Model& model = ps.model();
     const int n = ps.particleCount();
@@ -167,7 +175,12 @@ class VertexBlockDescent final : public Integrator {
       }
       Mat3 hessian;
       hessian << diagonal + hxx, hxy, hxz, hxy, diagonal + hyy, hyz, hxz, hyz, diagonal + hzz;
-      xp += hessian.llt().solve(f);
+      const int held = step_.holds.of(p);
+      if (held < 0) {
+        xp += hessian.llt().solve(f);
+      } else if (!step_.holds.all()[held].whole) {  // held on a contact plane (contact_holds.h)
+        xp = stepOnPlane(hessian.llt(), f, xp, step_.holds.all()[held]);
+      }
     }
   }
 

@@ -227,12 +227,17 @@ void ParticleSystem::afterStepConst(State& state) const {
   // the previous call left, when this state follows it in time (else, as at the start, the
   // state itself). Self-contacts first, the colliders last: nothing ends inside a collider.
   if (step_start_.size() != n3 || !(state.t > step_start_t_)) step_start_ = state.y.head(n3);
-  if (self_collision_) self_collision_->resolve(step_start_, state.y.head(n3), state.y.tail(n3));
+  selfContactPass(step_start_, state.y.head(n3), state.y.tail(n3));
   if (!model_.colliders.empty()) {
     resolveContacts(model_.colliders, model_.pinned, step_start_, state.y.head(n3), state.y.tail(n3));
   }
   step_start_ = state.y.head(n3);
   step_start_t_ = state.t;
+}
+
+void ParticleSystem::selfContactPass(Eigen::Ref<const Vector> start, Eigen::Ref<Vector> x,
+                                     Eigen::Ref<Vector> v) const {
+  if (self_collision_) self_collision_->resolve(start, x, v);
 }
 
 void ParticleSystem::afterStep(State& state) { afterStepConst(state); }

@@ -5,8 +5,10 @@
 // times the particle's own diagonal entry, so the plane is kept to a millionth of the particle's
 // move. Its matrix K n n^T couples the particle's x, y and z, which the constant matrix keeps
 // apart, so the step's matrix is factored as one 3F x 3F matrix (Eigen's SimplicialLDLT), once
-// per round of holds: contact scenes pay a factorisation a round, the others nothing.
+// per round of holds that differ from the few factored last (a resting cloth on a plane keeps
+// its factors from step to step): contact scenes pay for it, the others nothing.
 #include <Eigen/SparseCholesky>
+#include <memory>
 #include <vector>
 
 #include "mysim/contact_holds.h"
@@ -19,6 +21,8 @@ class HeldGlobalMatrix {
   // each particle's unknown. False if the factorisation fails.
   bool factor(const Eigen::SparseMatrix<double>& lower, const std::vector<int>& free_index,
               const ContactHolds& holds);
+  // The constant matrix changed (another step size): the next factor() factors anew.
+  void forget();
   // The holds' right-hand side, K (n . point) n on each held unknown.
   void addHoldTerms(Vector& rhs) const;
   // Solves in place (rhs by unknown, x y z).
@@ -32,8 +36,15 @@ class HeldGlobalMatrix {
     bool whole;     // held at the point: K I, not K n n^T
     Vec3 normal, point;
   };
-  std::vector<Term> terms_;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> factor_;
+  using Factor = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower>;
+  struct Factored {
+    std::vector<Term> terms;
+    std::unique_ptr<Factor> factor;
+  };
+  static constexpr std::size_t kRecent = 4;  // factors kept: a step's rounds, and the last step's
+  std::vector<Term> terms_;   // this round's holds
+  std::vector<Factored> recent_;
+  const Factor* current_ = nullptr;  // this round's, in recent_
 };
 
 }  // namespace mysim

@@ -90,6 +90,7 @@ class LocalGlobal final : public Integrator {
     std::string error;
     factored_ = factor_.factor(matrix.lower, error);
     lower_ = std::move(matrix.lower);
+    held_matrix_.forget();
     factored_h_ = h;
     scale_.resize(weight_.size());
     rhs_.resize(3 * static_cast<Eigen::Index>(free_particles_.size()));

@@ -31,7 +31,12 @@ struct ImplicitEulerStep {
 void prepareImplicitEulerStep(const ParticleSystem& ps, const State& s, double h,
                               ImplicitEulerStep& step);
 
-// r(x) above (3N, pinned rows zero, held particles without their normal part).
+// r(x) above less the kinetic friction on sliding held particles (3N, pinned rows zero): minus
+// the force each particle is left with, the holds' reactions included.
+void implicitEulerForces(const ParticleSystem& ps, const ImplicitEulerStep& step,
+                         const Vector& x, Vector& r);
+// The same with each held particle's held part removed (ContactHolds::removeReactions): the
+// residual a solve drives to zero.
 void implicitEulerResidual(const ParticleSystem& ps, const ImplicitEulerStep& step,
                            const Vector& x, Vector& r);
 
@@ -65,8 +70,7 @@ void finishImplicitEulerStep(OdeSystem& system, const ImplicitEulerStep& step, c
 
 // One round of contact holds (contact_holds.h) on the step's result x, for a re-solve; whether
 // any particle was newly held.
-inline bool holdContacts(const ParticleSystem& ps, ImplicitEulerStep& step, Vector& x) {
-  return step.holds.hold(ps, step.x0, step.h, x) > 0;
-}
+// `scratch`: a 3N vector for the holds' reactions.
+bool holdContacts(const ParticleSystem& ps, ImplicitEulerStep& step, Vector& x, Vector& scratch);
 
 }  // namespace mysim

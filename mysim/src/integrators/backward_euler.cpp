@@ -110,9 +110,17 @@ class BackwardEuler final : public Integrator {
     x1_ = x0 + h * s.y.tail(3 * n);
     holds_.clear(n);
     bool held = false;
-    for (int round = 0; round < kContactRounds && holds_.hold(ps, x0, h, x1_) > 0; ++round) {
+    // A hold's reaction: the linear system's residual at its row, A dv - b (an impulse), over h.
+    bool measured = false;  // product_ = A dv for this round's dv
+    const HoldReaction reaction = [&](int p) -> Vec3 {
+      const int i = free_index_[p];
+      if (!measured) multiply(ps, h, dv_free_, product_), measured = true;
+      return (product_.segment<3>(3 * i) - rhs_.segment<3>(3 * i) - h * holds_.all()[holds_.of(p)].force) / h;
+    };
+    for (int round = 0; round < kContactRounds && holds_.hold(ps, x0, h, x1_, reaction) > 0; ++round) {
       held = true;
       const CgResult cg = solveHeld(ps, h, x0);
+      measured = false;
       counts.linear_iterations += cg.iterations;
       counts.solver_failures = cg.converged ? 0 : 1;  // the last solve's
       for (int p = 0; p < n; ++p) {
@@ -144,6 +152,9 @@ class BackwardEuler final : public Integrator {
     };
     multiply(ps, h, constrained_, filtered_rhs_);
     filtered_rhs_ = rhs_ - filtered_rhs_;
+    for (const ContactHold& hold : holds_.all()) {  // kinetic friction's impulse
+      filtered_rhs_.segment<3>(3 * free_index_[hold.particle]) += h * hold.force;
+    }
     filter(filtered_rhs_);
     Vector y = dv_free_ - constrained_;
     filter(y);
@@ -315,7 +326,7 @@ class BackwardEuler final : public Integrator {
   // Contact holds (mysim/contact_holds.h): the holds, x1 of the last solve, each held row's
   // filter onto its free part, and the held part of dv.
   ContactHolds holds_;
-  Vector x1_, constrained_, filtered_rhs_;
+  Vector x1_, constrained_, filtered_rhs_, product_;
   std::vector<std::pair<int, Mat3>> filters_;
   double tolerance_;
   int max_iterations_;

@@ -2,20 +2,24 @@
 
 #include "mysim/contact.h"
 
+#include <algorithm>
+
 namespace mysim {
 
 void ContactHolds::clear(int n) {
   holds_.clear();
   index_.assign(n, -1);
+  any_friction_ = false;
 }
 
-int ContactHolds::hold(const ParticleSystem& ps, const Vector& x0, double h, Vector& x) {
-  if (const int held = holdInsideColliders(ps, x)) return held;
-  if (const int held = holdWhereFrictionActs(x0, x)) return held;
+int ContactHolds::hold(const ParticleSystem& ps, const Vector& x0, double h, Vector& x,
+                       const HoldReaction& reaction) {
+  if (const int held = holdInsideColliders(ps, x0, x)) return held;
+  if (const int changed = applyCoulombCone(reaction)) return changed;
   return holdSelfContacts(ps, x0, h, x);
 }
 
-int ContactHolds::holdInsideColliders(const ParticleSystem& ps, Vector& x) {
+int ContactHolds::holdInsideColliders(const ParticleSystem& ps, const Vector& x0, Vector& x) {
   const Model& model = ps.model();
   if (model.colliders.empty()) return 0;
   const std::vector<Blocked> inside_another = insideAnotherCollider(model.colliders);
@@ -26,32 +30,44 @@ int ContactHolds::holdInsideColliders(const ParticleSystem& ps, Vector& x) {
     const auto contact = firstContact(model.colliders, inside_another, at);
     if (!contact) continue;
     const SurfacePoint& s = contact->surface;
+    const Friction& friction = colliderFriction(model.colliders[contact->collider]);
+    // With friction it is tried stuck: on the plane where it was when the step began.
+    const Vec3 start = x0.segment<3>(3 * p);
+    const Vec3 point = friction.any() ? Vec3(start - (start - s.point).dot(s.normal) * s.normal) : s.point;
     index_[p] = static_cast<int>(holds_.size());
-    holds_.push_back({p, s.point, s.normal, false,
-                      colliderFriction(model.colliders[contact->collider]),
-                      std::max(0.0, (s.point - at).dot(s.normal))});
-    x.segment<3>(3 * p) = s.point;
+    holds_.push_back({p, point, s.normal, friction.any(), friction});
+    x.segment<3>(3 * p) = point;
     ++held;
   }
   return held;
 }
 
-int ContactHolds::holdWhereFrictionActs(const Vector& x0, Vector& x) {
-  int held = 0;
+int ContactHolds::applyCoulombCone(const HoldReaction& reaction) {
+  int changed = 0;
   for (ContactHold& hold : holds_) {
-    if (hold.whole || !hold.friction.any()) continue;
-    auto xp = x.segment<3>(3 * hold.particle);
-    Vec3 slowed = xp;
-    Vec3 no_velocity = Vec3::Zero();  // velocities follow from positions, (x - x0) / h
-    applyFriction(hold.friction, hold.normal, hold.pushed, 0.0, x0.segment<3>(3 * hold.particle),
-                  slowed, no_velocity);
-    if (slowed == Vec3(xp)) continue;
-    hold.whole = true;
-    hold.point = slowed;
-    xp = slowed;
-    ++held;
+    if (!hold.whole || !hold.friction.any()) continue;
+    const Vec3 r = reaction(hold.particle);
+    const double normal = r.dot(hold.normal);
+    const Vec3 tangential = r - normal * hold.normal;
+    const double needed = tangential.norm();
+    if (normal >= 0.0 && needed <= hold.friction.static_coefficient * normal) continue;
+    ++changed;
+    if (normal <= 0.0) {  // pulled off the surface: let go
+      hold.particle = -1;
+      continue;
+    }
+    // It slides: on its plane, with kinetic friction along the tangential force the hold had
+    // to supply (against the slide that force was holding back).
+    hold.whole = false;
+    hold.force = tangential * (hold.friction.kinetic * normal / needed);
+    any_friction_ = true;
   }
-  return held;
+  if (changed) {  // the let-go ones out, the index rebuilt
+    std::erase_if(holds_, [](const ContactHold& h) { return h.particle < 0; });
+    std::fill(index_.begin(), index_.end(), -1);
+    for (std::size_t k = 0; k < holds_.size(); ++k) index_[holds_[k].particle] = static_cast<int>(k);
+  }
+  return changed;
 }
 
 int ContactHolds::holdSelfContacts(const ParticleSystem& ps, const Vector& x0, double h, Vector& x) {
@@ -74,12 +90,17 @@ int ContactHolds::holdSelfContacts(const ParticleSystem& ps, const Vector& x0, d
 void ContactHolds::holdWhole(int particle, const Vec3& at) {
   if (index_[particle] < 0) {
     index_[particle] = static_cast<int>(holds_.size());
-    holds_.push_back({particle, at, Vec3::UnitY(), true, {}, 0.0});
+    holds_.push_back({particle, at, Vec3::UnitY(), true, {}});
     return;
   }
   ContactHold& hold = holds_[index_[particle]];
   hold.whole = true;
   hold.point = at;
+}
+
+void ContactHolds::addFrictionForces(Vector& f) const {
+  if (!any_friction_) return;
+  for (const ContactHold& h : holds_) f.segment<3>(3 * h.particle) += h.force;
 }
 
 void ContactHolds::removeReactions(Vector& r) const {

@@ -35,6 +35,21 @@ void prepareImplicitEulerStep(const ParticleSystem& ps, const State& s, double h
 
 void implicitEulerResidual(const ParticleSystem& ps, const ImplicitEulerStep& step,
                            const Vector& x, Vector& r) {
+  implicitEulerForces(ps, step, x, r);
+  step.holds.removeReactions(r);
+}
+
+bool holdContacts(const ParticleSystem& ps, ImplicitEulerStep& step, Vector& x, Vector& scratch) {
+  bool measured = false;
+  const HoldReaction reaction = [&](int p) -> Vec3 {
+    if (!measured) implicitEulerForces(ps, step, x, scratch), measured = true;
+    return scratch.segment<3>(3 * p);  // m~/h^2 (x - y~) = f + R: R = r
+  };
+  return step.holds.hold(ps, step.x0, step.h, x, reaction) > 0;
+}
+
+void implicitEulerForces(const ParticleSystem& ps, const ImplicitEulerStep& step,
+                         const Vector& x, Vector& r) {
   const Model& model = ps.model();
   const int n = ps.particleCount();
   r.resize(3 * n);
@@ -55,10 +70,10 @@ void implicitEulerResidual(const ParticleSystem& ps, const ImplicitEulerStep& st
     const Vec3 kb = hinge.stiffness * hingeVector(hinge, x.data());
     for (int a = 0; a < 4; ++a) r.segment<3>(3 * hinge.particle[a]) += hinge.weight[a] * kb;
   }
+  for (const ContactHold& hold : step.holds.all()) r.segment<3>(3 * hold.particle) -= hold.force;
   for (int p = 0; p < n; ++p) {
     if (model.pinned[p]) r.segment<3>(3 * p).setZero();
   }
-  step.holds.removeReactions(r);
 }
 
 double stepLoad(const ParticleSystem& ps, double t) {

@@ -57,7 +57,7 @@ class LocalGlobal final : public Integrator {
     prepareImplicitEulerStep(ps, s, h, step_);
     x_ = step_.target;
     PassesRun run = solve(ps);
-    for (int round = 0; round < kContactRounds && holdContacts(ps, step_, x_); ++round) {
+    for (int round = 0; round < kContactRounds && holdContacts(ps, step_, x_, residual_); ++round) {
       if (!held_matrix_.factor(lower_, free_index_, step_.holds)) {
         run.converged = false;
         break;
@@ -156,6 +156,9 @@ class LocalGlobal final : public Integrator {
     if (step_.holds.empty()) {
       factor_.solve(rhs_);
     } else {
+      for (const ContactHold& hold : step_.holds.all()) {
+        rhs_.segment<3>(3 * free_index_[hold.particle]) += hold.force;  // kinetic friction
+      }
       held_matrix_.addHoldTerms(rhs_);
       held_matrix_.solve(rhs_);
     }

@@ -56,7 +56,7 @@ class VertexBlockDescent final : public Integrator {
     prepareImplicitEulerStep(ps, s, h, step_);
     initialGuess(ps, s, h);
     PassesRun run = solve(ps);
-    for (int round = 0; round < kContactRounds && holdContacts(ps, step_, x_); ++round) {
+    for (int round = 0; round < kContactRounds && holdContacts(ps, step_, x_, residual_); ++round) {
       const PassesRun again = solve(ps);
       run = {run.passes + again.passes, again.converged};
     }
@@ -179,7 +179,8 @@ class VertexBlockDescent final : public Integrator {
       if (held < 0) {
         xp += hessian.llt().solve(f);
       } else if (!step_.holds.all()[held].whole) {  // held on a contact plane (contact_holds.h)
-        xp = stepOnPlane(hessian.llt(), f, xp, step_.holds.all()[held]);
+        const ContactHold& hold = step_.holds.all()[held];
+        xp = stepOnPlane(hessian.llt(), f + hold.force, xp, hold);
       }
     }
   }

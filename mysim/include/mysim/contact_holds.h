@@ -31,7 +31,9 @@
 
 namespace mysim {
 
-// Rounds a step makes at most: a contact step needs two to four (docs/performance.md).
+// Re-solves a step makes at most. Measured (local/global at 1/60 s): cloth_on_box re-solves twice
+// on 253 of its 300 steps, once on 37; cloth_on_sphere once a step. 8 leaves room for a step
+// where contacts, the cone and self-contacts each need their own.
 inline constexpr int kContactRounds = 8;
 
 struct ContactHold {
@@ -62,9 +64,6 @@ class ContactHolds {
   // r with each held particle's held part removed (its normal component, or all of it when
   // held whole): the surface's reaction balances it. Friction's forces are in r already.
   void removeReactions(Vector& r) const;
-  // The kinetic friction forces on sliding held particles added to f (3N).
-  void addFrictionForces(Vector& f) const;
-  bool anyFriction() const { return any_friction_; }
 
  private:
   int holdInsideColliders(const ParticleSystem& ps, const Vector& x0, Vector& x);
@@ -75,7 +74,6 @@ class ContactHolds {
   std::vector<ContactHold> holds_;
   std::vector<int> index_;  // (N) each particle's hold, -1 if none
   Vector trial_x_, trial_v_;  // (3N) self-collision's trial pass
-  bool any_friction_ = false;  // a hold has a friction force
 };
 
 // The position on hold's tangent plane nearest x + H^-1 f: the minimiser of the local quadratic

@@ -22,8 +22,9 @@ namespace {
 // spring.h); df/dv holds spring damping and drag. Solved by preconditioned conjugate gradient
 // over the free particles only (SpringBlockMatrix): pinned velocities are known, so their
 // columns move to the right-hand side. Particles the step puts inside a collider are held on it
-// and the step solved again (mysim/contact_holds.h, holdContacts below). First order; unconditionally stable on an oscillator,
-// where the amplitude shrinks by 1/sqrt(1 + (h w)^2) a step.
+// and the step solved again (mysim/contact_holds.h, holdContacts below). First order;
+// unconditionally stable on an oscillator, where the amplitude shrinks by 1/sqrt(1 + (h w)^2) a
+// step.
 class BackwardEuler final : public Integrator {
  public:
   BackwardEuler(double tolerance, int max_iterations, CgPreconditioner preconditioner)

@@ -1,15 +1,14 @@
 #include "mysim/contact_holds.h"
 
-#include "mysim/contact.h"
-
 #include <algorithm>
+
+#include "mysim/contact.h"
 
 namespace mysim {
 
 void ContactHolds::clear(int n) {
   holds_.clear();
   index_.assign(n, -1);
-  any_friction_ = false;
 }
 
 int ContactHolds::hold(const ParticleSystem& ps, const Vector& x0, double h, Vector& x,
@@ -60,7 +59,6 @@ int ContactHolds::applyCoulombCone(const HoldReaction& reaction) {
     // to supply (against the slide that force was holding back).
     hold.whole = false;
     hold.force = tangential * (hold.friction.kinetic * normal / needed);
-    any_friction_ = true;
   }
   if (changed) {  // the let-go ones out, the index rebuilt
     std::erase_if(holds_, [](const ContactHold& h) { return h.particle < 0; });
@@ -96,11 +94,6 @@ void ContactHolds::holdWhole(int particle, const Vec3& at) {
   ContactHold& hold = holds_[index_[particle]];
   hold.whole = true;
   hold.point = at;
-}
-
-void ContactHolds::addFrictionForces(Vector& f) const {
-  if (!any_friction_) return;
-  for (const ContactHold& h : holds_) f.segment<3>(3 * h.particle) += h.force;
 }
 
 void ContactHolds::removeReactions(Vector& r) const {

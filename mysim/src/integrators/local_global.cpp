@@ -35,10 +35,11 @@ namespace {
 // particles are unknowns, a pinned neighbour's term (k + c/h) x_pin(t + h) moves to the
 // right-hand side. The matrix is factored once per scene and step size (SparseLdlt3); its time is
 // reported apart from stepping (StepCounts::setup_seconds). Colliders: particles the solve puts
-// inside one are held on its surface and the step solved again (mysim/contact_holds.h), with
-// the holds' matrix factored per round (held_global_matrix.h, counted in the step's time); the
-// contacts after the step as every integrator (afterStep). Acceleration: Chebyshev over whole passes (Wang 2015,
-// integrators/chebyshev.h) after the floor's plain passes, with rho `acceleration_rho` (0: off).
+// inside one are held on its surface and the step solved again (mysim/contact_holds.h), the
+// matrix with the holds factored per new set of them (held_global_matrix.h, in the step's
+// time); then the contacts after the step, as every integrator (afterStep). Acceleration:
+// Chebyshev over whole passes (Wang 2015, integrators/chebyshev.h) after the floor's plain
+// passes, with rho `acceleration_rho` (0: off).
 class LocalGlobal final : public Integrator {
  public:
   LocalGlobal(PassControl control, double rho) : control_(control), chebyshev_(rho) {}

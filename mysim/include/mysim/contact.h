@@ -37,12 +37,6 @@ struct FirstContact {
 std::optional<FirstContact> firstContact(const std::vector<Collider>& colliders,
                                          const std::vector<Blocked>& inside_another, const Vec3& x);
 
-// Coulomb's law on what a normal projection removed (applyContact's, above): `pushed` (m, the
-// normal displacement put back) and `stopped` (m/s, the inward normal velocity taken away), on
-// the slide of x since `start` and the tangential part of v, n the surface's unit normal.
-void applyFriction(const Friction& friction, const Vec3& n, double pushed, double stopped,
-                   const Vec3& start, Eigen::Ref<Vec3> x, Eigen::Ref<Vec3> v);
-
 // After a step: every free particle touching a collider goes onto its surface (applyContact),
 // colliders in the model's order, each avoiding exits into the others (a box's bottom face on
 // the ground), with the collider's friction against the particle's position when the step

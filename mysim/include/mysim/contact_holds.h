@@ -78,7 +78,7 @@ class ContactHolds {
 
 // The position on hold's tangent plane nearest x + H^-1 f: the minimiser of the local quadratic
 // -f . d + d^T H d / 2 over steps d that keep the particle on the plane (a Lagrange multiplier
-// along the normal). VBD's vertex step and backward Euler's test use it.
+// along the normal). VBD's vertex step uses it.
 Vec3 stepOnPlane(const Eigen::LLT<Mat3>& hessian, const Vec3& f, const Vec3& x,
                  const ContactHold& hold);
 

@@ -8,8 +8,8 @@ namespace {
 // The part of u across the unit normal n.
 Vec3 tangential(const Vec3& u, const Vec3& n) { return u - u.dot(n) * n; }
 
-}  // namespace
-
+// Coulomb's law on what the normal projection removed: `pushed` (m, the normal displacement put
+// back) and `stopped` (m/s, the inward normal velocity taken away).
 void applyFriction(const Friction& friction, const Vec3& n, double pushed, double stopped,
                    const Vec3& start, Eigen::Ref<Vec3> x, Eigen::Ref<Vec3> v) {
   const Vec3 slid = tangential(x - start, n);
@@ -27,6 +27,8 @@ void applyFriction(const Friction& friction, const Vec3& n, double pushed, doubl
   const double speed = vt.norm();
   if (speed > 0.0) v -= vt * std::min(1.0, friction.kinetic * stopped / speed);
 }
+
+}  // namespace
 
 void applyContact(const SurfacePoint& s, const Friction& friction, const Vec3& start,
                   Eigen::Ref<Vec3> x, Eigen::Ref<Vec3> v) {

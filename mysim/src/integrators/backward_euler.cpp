@@ -107,7 +107,8 @@ class BackwardEuler final : public Integrator {
   bool holdContacts(const ParticleSystem& ps, double h, const State& s, StepCounts& counts) {
     if (ps.model().colliders.empty() && !ps.hasSelfCollision()) return false;
     const int n = ps.particleCount();
-    const Vector x0 = s.y.head(3 * n);
+    x0_ = s.y.head(3 * n);
+    const Vector& x0 = x0_;
     x1_ = x0 + h * s.y.tail(3 * n);
     holds_.clear(n);
     bool held = false;
@@ -324,10 +325,10 @@ class BackwardEuler final : public Integrator {
   std::vector<Vec3> stiffness_term_;  // (S) h^2 J (v_j - v_i) of each spring, this step
   Vector f_, dv_known_, rhs_, dv_free_;
   Vector v0_;  // (3N) the step's start velocities
-  // Contact holds (mysim/contact_holds.h): the holds, x1 of the last solve, each held row's
-  // filter onto its free part, and the held part of dv.
+  // Contact holds (mysim/contact_holds.h): the holds, x0 and x1 of the last solve, each held
+  // row's filter onto its free part, and the held part of dv.
   ContactHolds holds_;
-  Vector x1_, constrained_, filtered_rhs_, product_;
+  Vector x0_, x1_, constrained_, filtered_rhs_, product_;
   std::vector<std::pair<int, Mat3>> filters_;
   double tolerance_;
   int max_iterations_;

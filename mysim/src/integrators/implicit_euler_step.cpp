@@ -90,9 +90,10 @@ double stepLoad(const ParticleSystem& ps, double t) {
 PassResidual implicitEulerPassResidual(const ParticleSystem& ps, const ImplicitEulerStep& step,
                                        const Vector& x, Vector& r) {
   implicitEulerResidual(ps, step, x, r);  // inertia + springs + hinges
+  const Model& model = ps.model();
   double inertia = 0.0, springs = 0.0, scale = 0.0;
   for (int p = 0; p < ps.particleCount(); ++p) {
-    if (ps.model().pinned[p]) continue;
+    if (model.pinned[p]) continue;
     const Vec3 a = step.mass_over_h2[p] * (x.segment<3>(3 * p) - step.target.segment<3>(3 * p));
     inertia += a.squaredNorm();
     springs += (r.segment<3>(3 * p) - a).squaredNorm();

@@ -7,6 +7,7 @@
 
 #include "bench_scenes.h"
 #include "bench_state.h"
+#include "forces/spring_forces.h"
 #include "mysim/particle_system.h"
 
 namespace {

@@ -1,10 +1,10 @@
 #pragma once
 // The local/global matrix of the n x n benchmark cloth at h = 1/60 s: the solver's own
-// (mysim/local_global_matrix.h), lower triangle, pins eliminated.
+// (integrators/local_global_matrix.h), lower triangle, pins eliminated.
 #include <Eigen/SparseCore>
 
 #include "bench_scenes.h"
-#include "mysim/local_global_matrix.h"
+#include "integrators/local_global_matrix.h"
 #include "mysim/scene.h"
 
 namespace bench {

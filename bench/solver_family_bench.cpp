@@ -8,7 +8,7 @@
 #include "bench_scenes.h"
 #include "mysim/particle_system.h"
 #include "local_global_matrix.h"
-#include "mysim/sparse_ldlt3.h"
+#include "solvers/sparse_ldlt3.h"
 
 namespace {
 

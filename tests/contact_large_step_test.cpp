@@ -3,8 +3,8 @@
 // (h w)^2 times more energy into its springs than it takes out of its motion; at 1/60 s every
 // implicit family blew up landing a cloth (cloth_on_box at 0.25 s, cloth_fold_on_ground at
 // 0.28 s, by the energy-rise check, which allows a rise of a quarter of the energy scale). With
-// the particles held on the collider inside the solve (mysim/contact_holds.h) the landing is an
-// inelastic impact like any other: the total energy never rises by more than a thousandth of
+// the particles held on the collider inside the solve (integrators/contact_holds.h) the landing
+// is an inelastic impact like any other: the total energy never rises by more than a thousandth of
 // the energy scale, and friction keeps its closed form.
 // ctest-label: physics
 #include <gtest/gtest.h>

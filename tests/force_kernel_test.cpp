@@ -9,7 +9,7 @@
 
 #include "mysim/cloth.h"
 #include "mysim/particle_system.h"
-#include "mysim/spring_forces.h"
+#include "forces/spring_forces.h"
 
 namespace mysim {
 namespace {

@@ -169,7 +169,7 @@ TEST(FrictionOfACloth, OnAnInclineItSticksOrSlidesAsOneRigidSheetInEveryStableIn
 
 // At 1/60 s (the step users take) the families sold for large steps hold the same closed forms:
 // backward Euler, local/global and VBD hold the cloth's nodes on the incline inside their solve
-// with Coulomb on the holds' reactions (mysim/contact_holds.h). Sticking: no drift (measured:
+// with Coulomb on the holds' reactions (integrators/contact_holds.h). Sticking: no drift (measured:
 // 0 m). Sliding: within h / t + 1 % (the first-order step's own error on the constant
 // acceleration is h / t = 1.7 % at 1 s; measured: backward Euler and local/global 1.74 %, VBD
 // 2.09 %, XPBD on its substeps 0.24 %).

@@ -17,7 +17,7 @@
 #include "mysim/cloth_surface.h"
 #include "mysim/energy.h"
 #include "mysim/integrator.h"
-#include "mysim/mesh_cloth.h"
+#include "model/mesh_cloth.h"
 #include "mysim/particle_system.h"
 #include "mysim/scene.h"
 #include "mysim/scene_file.h"

@@ -1,5 +1,5 @@
 // Local/global (Liu 2013) and vertex block descent (Chen 2024): each must converge to the one
-// implicit-Euler step (mysim/implicit_euler_step.h), here solved independently by Newton's
+// implicit-Euler step (integrators/implicit_euler_step.h), here solved independently by Newton's
 // method with a finite-difference Jacobian, on a small damped cloth with every force term.
 //
 //   o . . . o     5 x 5 hanging cloth, its top corners pinned and moving (pin motion),
@@ -16,9 +16,9 @@
 
 #include "mysim/chain.h"
 #include "mysim/cloth.h"
-#include "mysim/graph_coloring.h"
-#include "mysim/implicit_euler_step.h"
-#include "mysim/sparse_ldlt3.h"
+#include "solvers/graph_coloring.h"
+#include "integrators/implicit_euler_step.h"
+#include "solvers/sparse_ldlt3.h"
 #include "test_support.h"
 
 namespace mysim {

@@ -1,7 +1,7 @@
 // The iterative solver families (XPBD, local/global, vertex block descent) at the large steps
 // they are sold for. With a fixed ten passes XPBD and VBD blew up on a stiff hanging cloth at
 // 1/60 s and all three on a hinge cantilever; with the shipped defaults (passes to a tolerance,
-// mysim/src/integrators/pass_control.h; XPBD in ten substeps) each must run these scenes whole
+// integrators/pass_control.h; XPBD in ten substeps) each must run these scenes whole
 // and settle where backward Euler settles. The cloth's 12 s runs take seconds in Release and
 // minutes under the sanitizers (releaseonly: in the quick tier, out of the sanitizer pass, which
 // runs the same solver code, passes to a tolerance and Chebyshev steps, on the hinge strip of

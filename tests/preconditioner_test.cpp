@@ -13,8 +13,8 @@
 #include "mysim/cloth.h"
 #include "mysim/integrator.h"
 #include "mysim/particle_system.h"
-#include "mysim/spring_block_matrix.h"
-#include "mysim/ssor_conjugate_gradient.h"
+#include "solvers/spring_block_matrix.h"
+#include "solvers/ssor_conjugate_gradient.h"
 
 namespace mysim {
 namespace {

@@ -76,7 +76,7 @@ INSTANTIATE_TEST_SUITE_P(ExplicitAndImplicit, ClothOnSphere,
                          testing::IntegratorParamName());
 
 // The iterative families (the catalogue's), local/global and VBD holding the contacts inside
-// their solve (mysim/contact_holds.h): the same rest. Release only: 75 s and 51 s under the
+// their solve (integrators/contact_holds.h): the same rest. Release only: 75 s and 51 s under the
 // sanitizers for local/global and VBD, whose hold code ContactAtOneSixtieth runs there too.
 std::vector<std::string> iterativeIntegrators() {
   std::vector<std::string> names;

@@ -7,7 +7,6 @@
 #include "mysim/ode_system.h"
 #include "mysim/self_collision.h"
 #include "mysim/spring_adjacency.h"
-#include "mysim/spring_forces.h"
 
 namespace mysim {
 

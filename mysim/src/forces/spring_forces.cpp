@@ -1,4 +1,4 @@
-#include "mysim/spring_forces.h"
+#include "forces/spring_forces.h"
 
 #include <algorithm>
 #include <cmath>

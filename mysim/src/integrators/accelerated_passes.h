@@ -4,7 +4,7 @@
 // implicitEulerPassResidual. With a tolerance the floor's passes run plain and Chebyshev takes
 // over after them: a step done by then (small steps, soft springs) is not slowed by a rho above
 // its own; without one, Chebyshev acts from the first pass (Chen 2024, the fixed-count form).
-#include "mysim/implicit_euler_step.h"
+#include "integrators/implicit_euler_step.h"
 #include "integrators/chebyshev.h"
 #include "integrators/pass_control.h"
 

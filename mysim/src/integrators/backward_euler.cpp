@@ -3,12 +3,12 @@
 #include <optional>
 #include <vector>
 
-#include "mysim/conjugate_gradient.h"
-#include "mysim/contact_holds.h"
+#include "solvers/conjugate_gradient.h"
+#include "integrators/contact_holds.h"
 #include "mysim/integrator.h"
 #include "mysim/particle_system.h"
-#include "mysim/spring_block_matrix.h"
-#include "mysim/ssor_conjugate_gradient.h"
+#include "solvers/spring_block_matrix.h"
+#include "solvers/ssor_conjugate_gradient.h"
 #include "core/parallel_threshold.h"
 
 namespace mysim {
@@ -22,7 +22,7 @@ namespace {
 // spring.h); df/dv holds spring damping and drag. Solved by preconditioned conjugate gradient
 // over the free particles only (SpringBlockMatrix): pinned velocities are known, so their
 // columns move to the right-hand side. Particles the step puts inside a collider are held on it
-// and the step solved again (mysim/contact_holds.h, holdContacts below). First order;
+// and the step solved again (integrators/contact_holds.h, holdContacts below). First order;
 // unconditionally stable on an oscillator, where the amplitude shrinks by 1/sqrt(1 + (h w)^2) a
 // step.
 class BackwardEuler final : public Integrator {
@@ -101,7 +101,7 @@ class BackwardEuler final : public Integrator {
     }
   }
 
-  // Contacts inside the step (mysim/contact_holds.h): rounds of holds on x1 = x0 + h v1, each
+  // Contacts inside the step (integrators/contact_holds.h): rounds of holds on x1 = x0 + h v1, each
   // re-solving the system with the held particles' velocity constrained (solveHeld); whether
   // any particle was held (s then holds the first solve's v1).
   bool holdContacts(const ParticleSystem& ps, double h, const State& s, StepCounts& counts) {
@@ -325,7 +325,7 @@ class BackwardEuler final : public Integrator {
   std::vector<Vec3> stiffness_term_;  // (S) h^2 J (v_j - v_i) of each spring, this step
   Vector f_, dv_known_, rhs_, dv_free_;
   Vector v0_;  // (3N) the step's start velocities
-  // Contact holds (mysim/contact_holds.h): the holds, x0 and x1 of the last solve, each held
+  // Contact holds (integrators/contact_holds.h): the holds, x0 and x1 of the last solve, each held
   // row's filter onto its free part, and the held part of dv.
   ContactHolds holds_;
   Vector x0_, x1_, constrained_, filtered_rhs_, product_;

@@ -1,4 +1,4 @@
-#include "mysim/contact_holds.h"
+#include "integrators/contact_holds.h"
 
 #include <algorithm>
 

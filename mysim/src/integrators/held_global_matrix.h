@@ -1,17 +1,17 @@
 #pragma once
-// Local/global's global step with particles held on a collider (mysim/contact_holds.h). A hold
-// keeps the particle on the surface's tangent plane, free along it; as a quadratic term of the
+// Local/global's global step with particles held on a collider (integrators/contact_holds.h). A
+// hold keeps the particle on the surface's tangent plane, free along it; as a quadratic term of the
 // step's energy it is a stiff spring to the plane, K/2 (n . (x - point))^2, with K kHoldWeight
 // times the particle's own diagonal entry, so the plane is kept to a millionth of the particle's
 // move. Its matrix K n n^T couples the particle's x, y and z, which the constant matrix keeps
-// apart, so the step's matrix is factored as one 3F x 3F matrix (Eigen's SimplicialLDLT), once
-// per round of holds that differ from the few factored last (a resting cloth on a plane keeps
-// its factors from step to step): contact scenes pay for it, the others nothing.
+// apart, so the step's matrix is factored as one 3F x 3F matrix (Eigen's SimplicialLDLT), once per
+// round of holds that differ from the few factored last (a resting cloth on a plane keeps its
+// factors from step to step): contact scenes pay for it, the others nothing.
 #include <Eigen/SparseCholesky>
 #include <memory>
 #include <vector>
 
-#include "mysim/contact_holds.h"
+#include "integrators/contact_holds.h"
 
 namespace mysim {
 

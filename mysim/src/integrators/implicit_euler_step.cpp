@@ -1,4 +1,4 @@
-#include "mysim/implicit_euler_step.h"
+#include "integrators/implicit_euler_step.h"
 
 #include <algorithm>
 #include <limits>

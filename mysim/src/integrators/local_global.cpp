@@ -3,14 +3,14 @@
 #include <string>
 #include <vector>
 
-#include "mysim/implicit_euler_step.h"
+#include "integrators/implicit_euler_step.h"
 #include "mysim/integrator.h"
-#include "mysim/local_global_matrix.h"
+#include "integrators/local_global_matrix.h"
 #include "mysim/particle_system.h"
-#include "mysim/sparse_ldlt3.h"
+#include "solvers/sparse_ldlt3.h"
 #include "integrators/accelerated_passes.h"
 #include "integrators/held_global_matrix.h"
-#include "mysim/spring_forces.h"
+#include "forces/spring_forces.h"
 #include "core/parallel_threshold.h"
 
 namespace mysim {
@@ -35,7 +35,7 @@ namespace {
 // particles are unknowns, a pinned neighbour's term (k + c/h) x_pin(t + h) moves to the
 // right-hand side. The matrix is factored once per scene and step size (SparseLdlt3); its time is
 // reported apart from stepping (StepCounts::setup_seconds). Colliders: particles the solve puts
-// inside one are held on its surface and the step solved again (mysim/contact_holds.h), the
+// inside one are held on its surface and the step solved again (integrators/contact_holds.h), the
 // matrix with the holds factored per new set of them (held_global_matrix.h, in the step's
 // time); then the contacts after the step, as every integrator (afterStep). Acceleration:
 // Chebyshev over whole passes (Wang 2015, integrators/chebyshev.h) after the floor's plain

@@ -1,4 +1,4 @@
-#include "mysim/local_global_matrix.h"
+#include "integrators/local_global_matrix.h"
 
 #include <algorithm>
 

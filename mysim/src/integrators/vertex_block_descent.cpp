@@ -2,8 +2,8 @@
 #include <cmath>
 #include <vector>
 
-#include "mysim/graph_coloring.h"
-#include "mysim/implicit_euler_step.h"
+#include "solvers/graph_coloring.h"
+#include "integrators/implicit_euler_step.h"
 #include "mysim/integrator.h"
 #include "mysim/particle_system.h"
 #include "integrators/accelerated_passes.h"

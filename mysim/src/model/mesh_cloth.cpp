@@ -1,4 +1,4 @@
-#include "mysim/mesh_cloth.h"
+#include "model/mesh_cloth.h"
 
 #include <algorithm>
 #include <cmath>

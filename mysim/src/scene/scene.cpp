@@ -1,7 +1,7 @@
 #include "mysim/scene.h"
 
 #include "mysim/circle_system.h"
-#include "mysim/mesh_cloth.h"
+#include "model/mesh_cloth.h"
 #include "mysim/particle_system.h"
 
 namespace mysim {

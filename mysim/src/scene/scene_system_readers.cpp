@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "mysim/cloth_material.h"
-#include "mysim/mesh_cloth.h"
+#include "model/mesh_cloth.h"
 
 namespace mysim {
 

@@ -1,4 +1,4 @@
-#include "mysim/conjugate_gradient.h"
+#include "solvers/conjugate_gradient.h"
 
 #include <algorithm>
 #include <cmath>

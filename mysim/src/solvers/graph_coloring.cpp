@@ -1,4 +1,4 @@
-#include "mysim/graph_coloring.h"
+#include "solvers/graph_coloring.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "mysim/sparse_ldlt3.h"
+#include "solvers/sparse_ldlt3.h"
 
 #include <Eigen/SparseCholesky>
 

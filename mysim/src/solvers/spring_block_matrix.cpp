@@ -1,4 +1,4 @@
-#include "mysim/spring_block_matrix.h"
+#include "solvers/spring_block_matrix.h"
 
 #include <Eigen/LU>
 #include <algorithm>

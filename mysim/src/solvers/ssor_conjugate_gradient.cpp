@@ -1,4 +1,4 @@
-#include "mysim/ssor_conjugate_gradient.h"
+#include "solvers/ssor_conjugate_gradient.h"
 
 #include <algorithm>
 #include <cmath>

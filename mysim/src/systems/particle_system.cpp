@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "forces/spring_forces.h"
 #include "solvers/vector_ops.h"
 #include "core/parallel_threshold.h"
 

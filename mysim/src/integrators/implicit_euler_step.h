@@ -11,7 +11,7 @@
 //          + sum_s (c_s / h) u_s u_s^T (dx_i - dx_j)
 // (dx = x - x0; u_s the spring's direction at x; the last term is spring damping at v1). Without
 // spring damping r is the gradient of 1/(2 h^2) |x - y~|^2_M~ + E(x) (Liu et al. 2013, eq. 6).
-#include "mysim/contact_holds.h"
+#include "integrators/contact_holds.h"
 #include "mysim/particle_system.h"
 #include "mysim/state.h"
 

@@ -1,6 +1,6 @@
 #pragma once
-#include "mysim/conjugate_gradient.h"
-#include "mysim/spring_block_matrix.h"
+#include "solvers/conjugate_gradient.h"
+#include "solvers/spring_block_matrix.h"
 
 namespace mysim {
 

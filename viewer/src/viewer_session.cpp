@@ -41,6 +41,7 @@ void ViewerSession::load() {
 }
 
 void ViewerSession::build() {
+  engines_.clear();  // their systems refer to model_, which changes here
   model_ = file_model_;
   config_ = file_config_;
   // The circle takes first-order methods only: fall back to RK4 there.
@@ -56,7 +57,6 @@ void ViewerSession::build() {
   if (swing_ && togglesApply()) {
     model_.pin_motion = mysim::PinMotion{mysim::Vec3::UnitZ(), 0.2, 0.5};  // the seed's swing
   }
-  engines_.clear();
   for (const std::string& name : engine_names_) {
     EngineView view;
     view.engine = name;

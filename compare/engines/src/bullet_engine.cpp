@@ -22,7 +22,7 @@ Engine bulletEngine(reference::BulletEngine which) {
     instance.notes = (*stepper)->notes();
     instance.stepper = std::move(*stepper);
     // mysim's system of the same model: start state, health checks, energy, output rows.
-    instance.system = mysim::makeSystem(model, config.limits);
+    instance.system = mysim::makeSystem(mysim::borrowed(model), config.limits);
     instance.start = instance.system->initialState();
     instance.integrator = reference::bulletIntegratorName(which, settings.classic_iterations);
     return instance;

@@ -305,7 +305,7 @@ Engine externalEngine(const ExternalEngineSpec& spec) {
     const std::optional<double> own_seconds = run->result.wall_seconds;
     const std::optional<long> evaluations = run->result.derivative_evaluations;
     const bool summary_present = run->result.summary_present;
-    auto system = mysim::makeSystem(model, config.limits);
+    auto system = mysim::makeSystem(mysim::borrowed(model), config.limits);
     ReplayStepper replay(std::move(run->result), run->plan, model.isCircle());
     mysim::RunRecord record = mysim::simulate(*system, replay, system->initialState(), config.run);
     // Its own method, whatever the scene names (the model file passes that on; it may follow it),
@@ -339,7 +339,7 @@ Engine externalEngine(const ExternalEngineSpec& spec) {
     auto run = execute(spec, model, config, true);
     if (!run) return std::unexpected(run.error());
     EngineInstance instance;
-    instance.system = mysim::makeSystem(model, config.limits);
+    instance.system = mysim::makeSystem(mysim::borrowed(model), config.limits);
     instance.start = instance.system->initialState();
     instance.stepper =
         std::make_unique<ReplayStepper>(std::move(run->result), run->plan, model.isCircle());

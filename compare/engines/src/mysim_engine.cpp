@@ -25,7 +25,7 @@ Engine mysimEngine() {
           EngineError::Kind::Refused, config.source + ": mysim: integrator.name: " + *refusal});
     }
     EngineInstance instance;
-    instance.system = mysim::makeSystem(model, config.limits);
+    instance.system = mysim::makeSystem(mysim::borrowed(model), config.limits);
     instance.stepper =
         std::make_unique<mysim::IntegratorStepper>(*instance.system, info->make(config.integrator));
     instance.start = instance.system->initialState();

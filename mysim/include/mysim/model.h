@@ -1,4 +1,5 @@
 #pragma once
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -70,5 +71,12 @@ Vec3 pinnedVelocity(const Model& model, double t);
 // Every spring's and hinge's stiffness times `scale` (sweeps and stability studies scale the
 // model).
 void scaleStiffness(Model& model, double scale);
+
+// A model lent to a system without a copy (makeSystem, ParticleSystem): a shared pointer that
+// owns nothing, for a caller that keeps `model` alive and unchanged for as long as the system
+// lives (an engine's instance and the model its registry was given).
+inline std::shared_ptr<const Model> borrowed(const Model& model) {
+  return std::shared_ptr<const Model>(std::shared_ptr<const Model>(), &model);
+}
 
 }  // namespace mysim

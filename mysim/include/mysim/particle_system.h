@@ -1,5 +1,6 @@
 #pragma once
 #include <Eigen/SparseCore>
+#include <memory>
 
 #include "mysim/blowup.h"
 #include "mysim/hinge.h"
@@ -12,9 +13,16 @@ namespace mysim {
 
 // Particles with mass under the model's force terms. y = [x (3N); v (3N)].
 // Pinned particles do not integrate forces: they follow the pin motion (or stay put).
+// The model is shared, never changed: a system copies a Model it is given, takes a temporary
+// over, and shares one given by pointer; borrowed() lends one without a copy (a 512 x 512 cloth's
+// model is 80 MB) to a system its owner outlives, as an engine's instance its registry's model.
 class ParticleSystem final : public OdeSystem {
  public:
-  ParticleSystem(Model model, BlowUpLimits limits);
+  ParticleSystem(const Model& model, BlowUpLimits limits)
+      : ParticleSystem(std::make_shared<const Model>(model), limits) {}
+  ParticleSystem(Model&& model, BlowUpLimits limits)
+      : ParticleSystem(std::make_shared<const Model>(std::move(model)), limits) {}
+  ParticleSystem(std::shared_ptr<const Model> model, BlowUpLimits limits);
 
   const Model& model() const { return model_; }
   int particleCount() const { return model_.particleCount(); }
@@ -83,7 +91,8 @@ class ParticleSystem final : public OdeSystem {
   // (from their k b) in the adjacencies' fixed order.
   Vec3 particleForce(int p, double t, const double* xs, const double* vs) const;
 
-  Model model_;
+  std::shared_ptr<const Model> shared_model_;  // owns nothing when borrowed (model.h)
+  const Model& model_;                         // *shared_model_
   BlowUpLimits limits_;
   // Positions (and time) after the last contact pass: where the next step began, which
   // friction measures the step's slide from. Mutable: initialState(), const, starts them.

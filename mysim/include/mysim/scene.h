@@ -83,8 +83,13 @@ struct Scene {
 // The model of a scene: every particle, spring and force term, expanded.
 Model buildModel(const Scene& scene);
 
-// The system of a model: the circle's ODE or particles under the model's forces.
-std::unique_ptr<OdeSystem> makeSystem(const Model& model, const BlowUpLimits& limits);
+// The system of a model: the circle's ODE or particles under the model's forces, which share the
+// model (ParticleSystem): a copy of a Model passed by value, or borrowed(model) without one.
+std::unique_ptr<OdeSystem> makeSystem(std::shared_ptr<const Model> model,
+                                      const BlowUpLimits& limits);
+inline std::unique_ptr<OdeSystem> makeSystem(Model model, const BlowUpLimits& limits) {
+  return makeSystem(std::make_shared<const Model>(std::move(model)), limits);
+}
 inline std::unique_ptr<OdeSystem> makeSystem(const Scene& scene) {
   return makeSystem(buildModel(scene), scene.limits);
 }

@@ -63,9 +63,10 @@ Model buildModel(const Scene& scene) {
   return model;
 }
 
-std::unique_ptr<OdeSystem> makeSystem(const Model& model, const BlowUpLimits& limits) {
-  if (model.isCircle()) return std::make_unique<CircleSystem>(model.circle_start);
-  return std::make_unique<ParticleSystem>(model, limits);
+std::unique_ptr<OdeSystem> makeSystem(std::shared_ptr<const Model> model,
+                                      const BlowUpLimits& limits) {
+  if (model->isCircle()) return std::make_unique<CircleSystem>(model->circle_start);
+  return std::make_unique<ParticleSystem>(std::move(model), limits);
 }
 
 }  // namespace mysim

@@ -11,8 +11,9 @@
 namespace mysim {
 
 
-ParticleSystem::ParticleSystem(Model model, BlowUpLimits limits)
-    : model_(std::move(model)),
+ParticleSystem::ParticleSystem(std::shared_ptr<const Model> model, BlowUpLimits limits)
+    : shared_model_(std::move(model)),
+      model_(*shared_model_),
       limits_(limits),
       adjacency_(SpringAdjacency::build(model_.particleCount(), model_.springs)),
       spring_scale_(static_cast<Eigen::Index>(model_.springs.size())),

@@ -115,6 +115,8 @@ class EngineRegistry {
 
   // Whether `spec` names an engine: a registered name, or "mysim:INTEGRATOR".
   [[nodiscard]] std::expected<void, std::string> check(const std::string& spec) const;
+  // An instance of the engine on `model`, which its systems borrow (mysim::borrowed): the
+  // caller keeps the model alive and unchanged while the instance lives.
   [[nodiscard]] std::expected<EngineInstance, EngineError> build(const std::string& spec,
                                                                  const mysim::Model& model,
                                                                  const RunConfig& config) const;

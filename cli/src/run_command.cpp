@@ -71,8 +71,8 @@ int runScene(const RunOptions& o) {
               << record->blowup->detail << '\n';
   } else if (record->status() != "ok") {
     std::cerr << record->status() << ": " << record->counts.solver_failures
-              << " linear solves stopped short of their tolerance (cg_tolerance, "
-                 "cg_max_iterations)\n";
+              << " steps' solves stopped short of their tolerance (the integrator's iteration "
+                 "limit and tolerance: `springcheck list` names its fields)\n";
   }
   return exitCodeForStatus(record->status());
 }

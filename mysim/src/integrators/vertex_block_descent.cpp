@@ -100,6 +100,11 @@ class VertexBlockDescent final : public Integrator {
     const Model& model = ps.model();
     const SpringAdjacency& a = ps.adjacency();
     const HingeAdjacency& ha = ps.hingeAdjacency();
+    // Exactly their sizes (at most: pinned vertices are left out): grown by doubling, the
+    // incidences held up to twice their 32 B a spring end, most of VBD's memory.
+    vertices_.reserve(model.particleCount() + 1);
+    incidences_.reserve(a.other.size());
+    hinge_incidences_.reserve(ha.hinge.size());
     for (const std::vector<int>& color : colorParticles(couplings(ps))) {
       Color packed{static_cast<int>(vertices_.size()), 0};
       for (int p : color) {

@@ -71,6 +71,7 @@ class Xpbd final : public Integrator {
   // the same bits).
   void prepareSubstep(const Model& model, double hs) {
     packed_.clear();
+    packed_.reserve(model.springs.size());  // exactly: grown by doubling it held up to twice that
     for (const std::vector<int>& color : colors_) {
       for (int k : color) {
         const Spring& sp = model.springs[k];

@@ -34,6 +34,11 @@ SpringBlockMatrix::SpringBlockMatrix(const SpringAdjacency& adjacency,
                                      const std::vector<int>& free_index, int spring_count)
     : blocks_(spring_count) {
   const int n = static_cast<int>(free_index.size());
+  // At most these sizes (pinned rows and columns are left out): grown by doubling they held up
+  // to twice that at a large cloth's peak memory.
+  row_offsets_.reserve(n + 1);
+  upper_begin_.reserve(n);
+  entries_.reserve(adjacency.other.size());
   row_offsets_.push_back(0);
   for (int p = 0; p < n; ++p) {
     const int row = free_index[p];

@@ -33,13 +33,5 @@ python3 bench/summarize.py "$OUT/bench.json" "$OUT/memory/summary.json" \
 machine=${SPRINGCHECK_MACHINE:-$(hostname -s)-$(nproc)cores}
 mkdir -p "bench/results/$machine"
 cp "$OUT/summary.csv" "bench/results/$machine/summary.csv"
-{
-  echo "machine: $machine"
-  grep -m1 "model name" /proc/cpuinfo | sed 's/^model name\s*: /cpu: /'
-  echo "cores: $(nproc)"
-  echo "memory: $(awk '/MemTotal/ { printf "%.1f GiB", $2 / 1048576 }' /proc/meminfo)"
-  echo "date: $(date -u +%Y-%m-%d)"
-  echo "commit: $(git rev-parse --short HEAD 2>/dev/null || echo unknown)"
-  echo "command: scripts/run-bench.sh"
-} >"bench/results/$machine/machine.txt"
+scripts/machine-info.sh "$machine" scripts/run-bench.sh >"bench/results/$machine/machine.txt"
 echo "results: bench/results/$machine/"

@@ -2,16 +2,17 @@
 """Cost per step and peak memory of each solver family as the cloth grows (issue 36, scale).
 
 Usage: scale_study.py SPRINGCHECK SPEC OUT_DIR [--resolutions 64,128] [--steps N]
-                      [--engines E1,E2] (engine names hold no comma)
+                      [--engines E1,E2] (engine names hold no comma) [--threads N]
 
-For every resolution of SPEC (bench/scale_study.json) and every engine, writes the cloth scene at
-that resolution and runs `springcheck run` on one thread twice, in processes of their own: one
-step and `steps` steps. The difference is the cost of a step without the first step's set-up (a
-factorisation, a colouring), and the longer run's peak resident memory, less a tiny scene's
-process (the executable and its libraries), is what the cloth costs in memory. Writes
-OUT_DIR/scale.csv (a row per engine and resolution) and OUT_DIR/scale_fit.csv (per engine: the
-growth exponent p of cost ~ nodes^p over all resolutions and between each pair, and the largest
-memory per node), and prints both. Reads the runs' summaries; no physics here.
+For every resolution of SPEC (bench/scale_study.json) and every engine, writes the cloth scene
+at that resolution and runs `springcheck run` on one thread twice, in processes of their own:
+one step and `steps` steps (--threads: on N threads instead). The difference is the cost of a
+step without the first step's set-up (a factorisation, a colouring), and the longer run's peak
+resident memory, less a tiny scene's process (the executable and its libraries), is what the
+cloth costs in memory. Writes OUT_DIR/scale.csv (a row per engine and resolution) and
+OUT_DIR/scale_fit.csv (per engine: the growth exponent p of cost ~ nodes^p over all resolutions
+and between each pair, and the largest memory per node), and prints both. Reads the runs'
+summaries; no physics here.
 """
 import csv
 import json
@@ -37,12 +38,12 @@ def scene_at(base, n, dt, steps):
     return scene
 
 
-def run(springcheck, scene_path, engine, out):
+def run(springcheck, scene_path, engine, out, threads=1):
     """One `springcheck run` in its own process; its summary, or None with the reason printed.
     A run that ends unconverged or early still writes a whole summary, which says so (status)."""
     shutil.rmtree(out, ignore_errors=True)
     done = subprocess.run([springcheck, "run", str(scene_path), "--engine", engine, "--threads",
-                           "1", "--fixed-threads", "--out", str(out)],
+                           str(threads), "--fixed-threads", "--out", str(out)],
                           capture_output=True, text=True)
     if not (out / "summary.json").exists():
         print(f"{engine} on {scene_path.name}: exit {done.returncode}: {done.stderr.strip()}",
@@ -51,25 +52,29 @@ def run(springcheck, scene_path, engine, out):
     return json.loads((out / "summary.json").read_text())
 
 
-def measure(springcheck, spec, n, engine, work, baseline_bytes):
+def measure(springcheck, spec, n, engine, work, baseline_bytes, threads):
     """One row: the engine on the n x n cloth."""
     base = json.loads(spec["base"].read_text())
     summaries = {}
     for steps in (1, spec["steps"]):
         path = work / f"cloth_{n}_{steps}.json"
         path.write_text(json.dumps(scene_at(base, n, spec["dt"], steps)))
-        summaries[steps] = run(springcheck, path, engine, work / f"{engine}_{n}_{steps}")
+        summaries[steps] = run(springcheck, path, engine, work / f"{engine}_{n}_{steps}", threads)
         if summaries[steps] is None:
             return None
     one, many = summaries[1], summaries[spec["steps"]]
-    per_step = (many["wall_seconds"] - one["wall_seconds"]) / (spec["steps"] - 1)
+    # A set-up the engine reports (local/global's factorisation) is taken out of each run first:
+    # its own spread from run to run is larger than a step.
+    stepping = [r["wall_seconds"] - (r.get("setup_seconds") or 0.0) for r in (one, many)]
+    per_step = (stepping[1] - stepping[0]) / (spec["steps"] - 1)
     later_passes = (many["linear_iterations"] - one["linear_iterations"]) / (spec["steps"] - 1)
     nodes = n * n
     memory = many["peak_resident_bytes"] - baseline_bytes
     return {
-        "engine": engine, "cells": n, "nodes": nodes, "status": many["status"],
+        "engine": engine, "cells": n, "nodes": nodes, "threads": threads,
+        "status": many["status"],
         "ms_per_step": 1e3 * per_step,
-        "setup_ms": 1e3 * max(0.0, one["wall_seconds"] - per_step),
+        "setup_ms": 1e3 * max(0.0, one["wall_seconds"] - per_step),  # reported or not
         "passes_per_step": later_passes,
         "us_per_pass_per_knode": 1e6 * per_step / max(later_passes, 1) / (nodes / 1e3),
         "solver_failures": many["solver_failures"],
@@ -123,13 +128,15 @@ def main(args):
     resolutions = [int(n) for n in option(args, "--resolutions",
                                           ",".join(map(str, spec["resolutions"]))).split(",")]
     engines = option(args, "--engines", ",".join(spec["engines"])).split(",")
+    threads = int(option(args, "--threads", 1))
     work = out / "runs"
     work.mkdir(parents=True, exist_ok=True)
     baseline = run(springcheck, spec_path.parent / spec["baseline_scene"], "mysim", work / "baseline")
     rows = []
     for n in resolutions:
         for engine in engines:
-            row = measure(springcheck, spec, n, engine, work, baseline["peak_resident_bytes"])
+            row = measure(springcheck, spec, n, engine, work, baseline["peak_resident_bytes"],
+                          threads)
             if row:
                 rows.append(row)
                 print(", ".join(f"{k} {v:.4g}" if isinstance(v, float) else f"{k} {v}"

@@ -23,17 +23,21 @@ import subprocess
 import sys
 
 
-def scene_at(base, n, dt, steps):
+def scene_at(base, n, dt, steps, integrator_fields):
     """The base cloth at n x n nodes, same total mass and drag rate (mass and drag per node scale
-    as 1 / n^2), `steps` steps of dt, its start and end the only frames kept."""
+    as 1 / n^2), `steps` steps of dt, its start and end the only frames kept; the spec's
+    integrator fields (backward Euler's cg_tolerance, which no engine name carries) added."""
     scene = json.loads(json.dumps(base))
     total_mass = base["system"]["particle_mass"] * base["system"]["rows"] * base["system"]["cols"]
     drag_rate = base["forces"]["drag"] / base["system"]["particle_mass"]
     scene["name"] = f"scale_{n}"
+    scene["description"] = (f"{base['name']} at {n} x {n} nodes, same total mass, stiffnesses and "
+                            f"drag rate: bench/scale_study.py")
     scene["system"]["rows"] = scene["system"]["cols"] = n
     scene["system"]["particle_mass"] = total_mass / (n * n)
     scene["forces"]["drag"] = drag_rate * total_mass / (n * n)
-    scene["integrator"] = {"name": base["integrator"]["name"], "dt": dt, "duration": steps * dt}
+    scene["integrator"] = {"name": base["integrator"]["name"], "dt": dt, "duration": steps * dt,
+                           **integrator_fields}
     scene["output"] = {"sample_interval": steps * dt}
     return scene
 
@@ -58,7 +62,8 @@ def measure(springcheck, spec, n, engine, work, baseline_bytes, threads):
     summaries = {}
     for steps in (1, spec["steps"]):
         path = work / f"cloth_{n}_{steps}.json"
-        path.write_text(json.dumps(scene_at(base, n, spec["dt"], steps)))
+        path.write_text(json.dumps(scene_at(base, n, spec["dt"], steps,
+                                            spec.get("integrator_fields", {}))))
         summaries[steps] = run(springcheck, path, engine, work / f"{engine}_{n}_{steps}", threads)
         if summaries[steps] is None:
             return None

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """bench/scale_study.py on tiny cloths: a row per engine and size, each run a process of its own.
 
-Usage: scale_study_test.py SPRINGCHECK SOURCE_DIR WORK_DIR. Runs the study of
-bench/scale_study.json at 6 and 10 cells a side (milliseconds each) and checks what its table
+Usage: scale_study_test.py SPRINGCHECK SOURCE_DIR WORK_DIR SPEC. Runs the study of SPEC
+(bench/scale_study.json, bench/equal_error_study.json) at 6 and 10 cells a side (milliseconds each) and checks what its table
 must say whatever the machine: every engine at every size, every run whole ("ok"), the
 fixed-count forms at exactly their 10 passes a step (the two runs' difference, so a broken
 difference shows), and memory figures that are numbers. Exit 1 naming the first row that fails.
@@ -16,10 +16,10 @@ import subprocess
 import sys
 
 
-def main(springcheck, source, work):
+def main(springcheck, source, work, spec):
     source, work = pathlib.Path(source), pathlib.Path(work)
     shutil.rmtree(work, ignore_errors=True)
-    spec = source / "bench/scale_study.json"
+    spec = source / spec
     done = subprocess.run([sys.executable, str(source / "bench/scale_study.py"), springcheck,
                            str(spec), str(work), "--resolutions", "6,10", "--steps", "2"],
                           capture_output=True, text=True)
@@ -44,9 +44,9 @@ def main(springcheck, source, work):
         if not all(math.isfinite(float(r[k])) for k in ("peak_mib", "bytes_per_node", "ms_per_step")):
             print(f"{where}: a figure is not a number: {r}")
             return 1
-    print(f"{len(rows)} rows: every engine at 6 and 10 cells, fixed counts at 10 passes")
+    print(f"{len(rows)} rows: every engine of {spec.name} at 6 and 10 cells, any fixed count at its 10 passes")
     return 0
 
 
 if __name__ == "__main__":
-    sys.exit(main(*sys.argv[1:4]))
+    sys.exit(main(*sys.argv[1:5]))

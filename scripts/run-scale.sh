@@ -10,6 +10,7 @@
 # bench/scale_study.py (--resolutions 64,128 --steps 2 for a quick look).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+command="scripts/run-scale.sh $*"
 study=scale
 if [[ "${1:-}" == --equal-error ]]; then
   study=equal_error
@@ -22,5 +23,5 @@ machine=${SPRINGCHECK_MACHINE:-$(hostname -s)-$(nproc)cores}
 mkdir -p "bench/results/$machine"
 cp "$OUT/scale.csv" "bench/results/$machine/$study.csv"
 cp "$OUT/scale_fit.csv" "bench/results/$machine/${study}_fit.csv"
-scripts/machine-info.sh "$machine" "scripts/run-scale.sh $*" >"bench/results/$machine/${study}_machine.txt"
+scripts/machine-info.sh "$machine" "$command" >"bench/results/$machine/${study}_machine.txt"
 echo "results: bench/results/$machine/$study.csv, ${study}_fit.csv"

@@ -56,14 +56,20 @@ def run(springcheck, scene_path, engine, out, threads=1):
     return json.loads((out / "summary.json").read_text())
 
 
-def measure(springcheck, spec, n, engine, work, baseline_bytes, threads):
-    """One row: the engine on the n x n cloth."""
-    base = json.loads(spec["base"].read_text())
-    summaries = {}
+def write_scenes(spec, base, n, work):
+    """The n x n cloth's two scene files, one step and `steps` steps: {steps: path}."""
+    paths = {}
     for steps in (1, spec["steps"]):
-        path = work / f"cloth_{n}_{steps}.json"
-        path.write_text(json.dumps(scene_at(base, n, spec["dt"], steps,
-                                            spec.get("integrator_fields", {}))))
+        paths[steps] = work / f"cloth_{n}_{steps}.json"
+        paths[steps].write_text(json.dumps(scene_at(base, n, spec["dt"], steps,
+                                                    spec.get("integrator_fields", {}))))
+    return paths
+
+
+def measure(springcheck, spec, scenes, n, engine, work, baseline_bytes, threads):
+    """One row: the engine on the n x n cloth (its scene files `scenes`, from write_scenes)."""
+    summaries = {}
+    for steps, path in scenes.items():
         summaries[steps] = run(springcheck, path, engine, work / f"{engine}_{n}_{steps}", threads)
         if summaries[steps] is None:
             return None
@@ -79,7 +85,8 @@ def measure(springcheck, spec, n, engine, work, baseline_bytes, threads):
         "engine": engine, "cells": n, "nodes": nodes, "threads": threads,
         "status": many["status"],
         "ms_per_step": 1e3 * per_step,
-        "setup_ms": 1e3 * max(0.0, one["wall_seconds"] - per_step),  # reported or not
+        # The one-step run less a step: the set-up, whether the engine reports it or not.
+        "setup_ms": 1e3 * max(0.0, one["wall_seconds"] - per_step),
         "passes_per_step": later_passes,
         "us_per_pass_per_knode": 1e6 * per_step / max(later_passes, 1) / (nodes / 1e3),
         "solver_failures": many["solver_failures"],
@@ -104,8 +111,8 @@ def fits(rows):
         if len(mine) < 2:
             continue
         points = [(r["nodes"], r["ms_per_step"]) for r in mine]
-        local = [f"{a['cells']}-{b['cells']}: {slope([(a['nodes'], a['ms_per_step']), (b['nodes'], b['ms_per_step'])]):.2f}"
-                 for a, b in zip(mine, mine[1:])]
+        local = [f"{a['cells']}-{b['cells']}: {slope(points[k:k + 2]):.2f}"
+                 for k, (a, b) in enumerate(zip(mine, mine[1:]))]
         out.append({"engine": engine, "exponent": slope(points),
                     "pass_exponent": slope([(r["nodes"], r["us_per_pass_per_knode"] * r["nodes"])
                                             for r in mine]),
@@ -136,12 +143,15 @@ def main(args):
     threads = int(option(args, "--threads", 1))
     work = out / "runs"
     work.mkdir(parents=True, exist_ok=True)
-    baseline = run(springcheck, spec_path.parent / spec["baseline_scene"], "mysim", work / "baseline")
+    baseline = run(springcheck, spec_path.parent / spec["baseline_scene"], "mysim",
+                   work / "baseline")
+    base = json.loads(spec["base"].read_text())
     rows = []
     for n in resolutions:
+        scenes = write_scenes(spec, base, n, work)
         for engine in engines:
-            row = measure(springcheck, spec, n, engine, work, baseline["peak_resident_bytes"],
-                          threads)
+            row = measure(springcheck, spec, scenes, n, engine, work,
+                          baseline["peak_resident_bytes"], threads)
             if row:
                 rows.append(row)
                 print(", ".join(f"{k} {v:.4g}" if isinstance(v, float) else f"{k} {v}"

@@ -7,7 +7,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 triad=$(build/release/bench/springcheck_bench --benchmark_filter='^BM_StreamTriad/' \
   --benchmark_format=json 2>/dev/null |
-  python3 -c 'import json, sys; b = json.load(sys.stdin)["benchmarks"][0]; print("%.1f GB/s" % (b["bytes_per_second"] / 1e9))')
+  python3 -c 'import json, sys
+b = json.load(sys.stdin)["benchmarks"][0]
+print("%.1f GB/s" % (b["bytes_per_second"] / 1e9))')
 echo "machine: $1"
 grep -m1 "model name" /proc/cpuinfo | sed 's/^model name\s*: /cpu: /'
 echo "cores: $(nproc)"

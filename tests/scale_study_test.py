@@ -2,10 +2,11 @@
 """bench/scale_study.py on tiny cloths: a row per engine and size, each run a process of its own.
 
 Usage: scale_study_test.py SPRINGCHECK SOURCE_DIR WORK_DIR SPEC. Runs the study of SPEC
-(bench/scale_study.json, bench/equal_error_study.json) at 6 and 10 cells a side (milliseconds each) and checks what its table
-must say whatever the machine: every engine at every size, every run whole ("ok"), the
-fixed-count forms at exactly their 10 passes a step (the two runs' difference, so a broken
-difference shows), and memory figures that are numbers. Exit 1 naming the first row that fails.
+(bench/scale_study.json, bench/equal_error_study.json) at 6 and 10 cells a side (milliseconds
+each) and checks what its table must say whatever the machine: every engine at every size, every
+run whole ("ok"), the fixed-count forms at exactly their 10 passes a step (the two runs'
+difference, so a broken difference shows), and memory figures that are numbers. Exit 1 naming
+the first row that fails.
 """
 import csv
 import json
@@ -41,10 +42,12 @@ def main(springcheck, source, work, spec):
         if "tolerance=0" in r["engine"] and float(r["passes_per_step"]) != 10:
             print(f"{where}: {r['passes_per_step']} passes a step, its fixed count is 10")
             return 1
-        if not all(math.isfinite(float(r[k])) for k in ("peak_mib", "bytes_per_node", "ms_per_step")):
+        figures = ("peak_mib", "bytes_per_node", "ms_per_step")
+        if not all(math.isfinite(float(r[k])) for k in figures):
             print(f"{where}: a figure is not a number: {r}")
             return 1
-    print(f"{len(rows)} rows: every engine of {spec.name} at 6 and 10 cells, any fixed count at its 10 passes")
+    print(f"{len(rows)} rows: every engine of {spec.name} at 6 and 10 cells, "
+          "any fixed count at its 10 passes")
     return 0
 
 

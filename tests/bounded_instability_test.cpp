@@ -57,12 +57,12 @@ TEST(BoundedInstability, AStableRunOfTheSameDampedSceneIsNotReported) {
 mysim::Scene dampedCloth() {
   mysim::Scene s;
   s.name = "damped_cloth";
-  s.kind = mysim::SystemKind::Cloth;
-  s.cloth.rows = s.cloth.cols = 6;
-  s.cloth.particle_mass = 0.01;
-  s.cloth.structural = s.cloth.shear = mysim::SpringParameters{20.0, 0.0};
-  s.cloth.flex = mysim::SpringParameters{2.0, 0.0};
-  s.pins = {0, 5};
+  mysim::ClothScene& cloth = s.system.emplace<mysim::ClothScene>();
+  cloth.shape.rows = cloth.shape.cols = 6;
+  cloth.shape.particle_mass = 0.01;
+  cloth.shape.structural = cloth.shape.shear = mysim::SpringParameters{20.0, 0.0};
+  cloth.shape.flex = mysim::SpringParameters{2.0, 0.0};
+  cloth.start.pins = {0, 5};
   s.gravity = mysim::Vec3(0, -9.8, 0);
   s.drag = 0.2;  // 20 /s
   s.integrator.name = "euler";

@@ -81,7 +81,7 @@ TEST(Capstan, ARunWithinTheHoldingLoadStaysAndOnePastItIsSaidToSlip) {
   const ClosedFormResult held = closedFormError(model, *run);
   ASSERT_TRUE(held) << held.error();
   EXPECT_LT(held->error, kHeld);
-  scene.particles.back().mass *= 1.2;  // 2.4 -> 2.88 times the hold: past e^(mu pi) = 2.57
+  std::get<mysim::ParticlesScene>(scene.system).particles.back().mass *= 1.2;  // 2.4 -> 2.88 times the hold: past e^(mu pi) = 2.57
   const mysim::Model heavy = mysim::buildModel(scene);
   auto slipped = registry.run("mysim", scene);
   ASSERT_TRUE(slipped) << slipped.error().message;

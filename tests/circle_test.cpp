@@ -68,10 +68,9 @@ TEST(Circle, IsNotAParticleSystemAndEveryIntegratorThatTakesItKeepsItOnTheCircle
 // each coordinate of x'' = -x is an oscillator whose phase point turns like the circle's.
 TEST(Circle, MechanicalTwinRadiusEqualsTheFirstOrderRadiusUnderEveryExplicitMethod) {
   Model circle;
-  circle.kind = SystemKind::Circle;
-  circle.circle_start = {0.6, 0.8};
+  circle.circle_start = Eigen::Vector2d(0.6, 0.8);
   ParticleSystem twin(circleTwin(circle), BlowUpLimits{});
-  CircleSystem first_order(circle.circle_start);
+  CircleSystem first_order(*circle.circle_start);
   for (const char* name : {"euler", "trapezoidal", "rk4"}) {
     State a = first_order.initialState(), b = twin.initialState();
     auto ma = testing::integratorNamed(name), mb = testing::integratorNamed(name);

@@ -174,7 +174,7 @@ TEST(ClosedForm, EllipticKKnownValues) {
 
 TEST(ClosedForm, ExactCircleFramesHaveZeroErrorAndAShiftedOneItsShift) {
   mysim::Model circle;
-  circle.kind = mysim::SystemKind::Circle;
+  circle.circle_start = Eigen::Vector2d(1.0, 0.0);
   mysim::RunRecord run;
   for (double t : {0.0, 0.5, 1.0}) {
     mysim::ParticleRows row = mysim::ParticleRows::Zero(1, 6);

@@ -151,8 +151,9 @@ TEST(HingeBending, TheForceIsMinusTheEnergysGradient) {
 // in the failure message).
 TEST(HingeBending, EveryIntegratorFamilySettlesTheSameStripUnderASmallLoad) {
   Scene scene = materialSheet(16, 0.1, 0.0125, 2e-2, "\"left_clamp\"");
-  scene.cloth_material->damping_rate = 30.0;
-  scene.drag = 30.0 * 0.2 * scene.material_grid.dx * scene.material_grid.dy;
+  ClothScene& strip = std::get<ClothScene>(scene.system);
+  strip.material->damping_rate = 30.0;
+  scene.drag = 30.0 * 0.2 * strip.material_grid.dx * strip.material_grid.dy;
   const double w = 0.2 * 9.8, L = 0.1, beam = w * std::pow(L, 4) / (8 * 2e-2);
   std::vector<double> drops;
   // The explicit integrators take the same force (ParticleSystem::force): held to mysim's

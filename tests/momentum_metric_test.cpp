@@ -14,10 +14,10 @@ namespace {
 mysim::Scene spinningPair(const std::string& integrator) {
   mysim::Scene s;
   s.name = "pair";
-  s.kind = mysim::SystemKind::Particles;
-  s.particles = {{mysim::Vec3(-0.2, 0, 0), mysim::Vec3(0.1, -0.6, 0.2), 0.3, false},
-                 {mysim::Vec3(0.2, 0, 0), mysim::Vec3(0.3, 0.6, 0.1), 0.1, false}};
-  s.springs = {{.i = 0, .j = 1, .rest_length = 0.3, .stiffness = 40.0}};
+  mysim::ParticlesScene& pair = s.system.emplace<mysim::ParticlesScene>();
+  pair.particles = {{mysim::Vec3(-0.2, 0, 0), mysim::Vec3(0.1, -0.6, 0.2), 0.3, false},
+                    {mysim::Vec3(0.2, 0, 0), mysim::Vec3(0.3, 0.6, 0.1), 0.1, false}};
+  pair.springs = {{.i = 0, .j = 1, .rest_length = 0.3, .stiffness = 40.0}};
   s.gravity = mysim::Vec3(0, -9.8, 0);
   s.integrator.name = integrator;
   s.dt = 1e-3;
@@ -60,7 +60,7 @@ TEST(MomentumDrift, AnImpulseInTheRecordIsFound) {
 
 TEST(MomentumDrift, NotReportedWherePinsOrDragActFromOutside) {
   mysim::Scene pinned = spinningPair("rk4");
-  pinned.particles[0].pinned = true;
+  std::get<mysim::ParticlesScene>(pinned.system).particles[0].pinned = true;
   mysim::Scene dragged = spinningPair("rk4");
   dragged.drag = 0.1;
   for (const mysim::Scene& scene : {pinned, dragged}) {

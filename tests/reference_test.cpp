@@ -90,7 +90,7 @@ TEST_P(EveryBulletEngine, FreeFallMatchesClosedFormWithinTheSymplecticEulerOffse
   });
   ASSERT_NEAR(t, 1.0, 1e-9);
   for (int p = 0; p < 3; ++p) {
-    const auto& particle = scene.particles[p];
+    const auto& particle = std::get<mysim::ParticlesScene>(scene.system).particles[p];
     const mysim::Vec3 exact =
         particle.position + particle.velocity * t + 0.5 * scene.gravity * t * t;
     // Every Bullet engine kicks then drifts (v += g h, x += v h): symplectic Euler, which lands
@@ -113,7 +113,7 @@ TEST_P(EveryBulletEngine, DrivenPinsFollowThePrescribedMotion) {
   Scene scene = matchedScene("cloth_driven.json");
   scene.duration = 0.6;
   stepScene(scene, GetParam(), [&](const mysim::Model& model, const mysim::State& s) {
-    for (int p : scene.pins) {
+    for (int p : std::get<mysim::ClothScene>(scene.system).start.pins) {
       const mysim::Vec3 expected = mysim::pinnedPosition(model, p, s.t);
       ASSERT_LT((mysim::Vec3(s.y.segment<3>(3 * p)) - expected).norm(), 1e-12) << s.t;
     }
@@ -157,7 +157,7 @@ INSTANTIATE_TEST_SUITE_P(All, EveryBulletEngine, ::testing::ValuesIn(kAllEngines
 std::pair<double, double> chainSagError(BulletEngine engine) {
   const Scene scene = matchedScene("chain_hanging.json");
   const mysim::RunRecord record = runScene(scene, engine);
-  const auto& c = scene.chain;
+  const auto& c = std::get<mysim::ChainScene>(scene.system).shape;
   const int n = c.particles - 1;
   const double w = c.particle_mass * 9.8 / c.stiffness;
   double worst = 0.0;

@@ -265,11 +265,11 @@ TEST(SceneFile, ValidScenesLoadWithTheirDefaults) {
   auto cloth = parseScene(validCloth().dump(), "good.json");
   ASSERT_TRUE(cloth) << cloth.error();
   EXPECT_EQ(cloth->name, "good");
-  EXPECT_EQ(cloth->pins, (std::vector<int>{0, 4}));
-  EXPECT_FALSE(cloth->cloth.shear.has_value());
+  EXPECT_EQ(std::get<ClothScene>(cloth->system).start.pins, (std::vector<int>{0, 4}));
+  EXPECT_FALSE(std::get<ClothScene>(cloth->system).shape.shear.has_value());
   auto particles = parseScene(validParticles().dump(), "p.json");
   ASSERT_TRUE(particles) << particles.error();
-  EXPECT_DOUBLE_EQ(particles->springs[0].rest_length, 1.0);  // default: start distance
+  EXPECT_DOUBLE_EQ(std::get<ParticlesScene>(particles->system).springs[0].rest_length, 1.0);  // default: start distance
   EXPECT_EQ(particles->integrator.name, "rk4");
 }
 

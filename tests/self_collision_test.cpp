@@ -71,7 +71,7 @@ TEST(SelfCollision, OtherHeightsAndThicknessesHoldAndTheMetricFindsTheCrossingsW
   for (double lift : {0.1, 0.6}) {
     for (double thickness : {0.003, 0.008}) {
       mysim::Scene scene = test::contactScene("cloth_fold_on_ground");
-      scene.cloth.origin.y() = 1.0 + lift;  // the lower edge `lift` above the ground
+      std::get<mysim::ClothScene>(scene.system).shape.origin.y() = 1.0 + lift;  // the lower edge `lift` above the ground
       scene.self_collision_thickness = thickness;
       const SelfContact on = selfContactOf(registry, "mysim", scene);
       EXPECT_EQ(on.intersections.value_or(-1), 0) << "lift " << lift << ", thickness " << thickness;

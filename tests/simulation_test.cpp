@@ -128,7 +128,7 @@ class ExternalWork : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ExternalWork, AccountsForEveryJouleTheDriverPutsIn) {
   Scene scene = sceneFile("chain.json");
-  scene.chain.damping = 0.0;
+  std::get<ChainScene>(scene.system).shape.damping = 0.0;
   scene.drag = 0.0;
   scene.dt = 0.001;
   scene.duration = 3.0;

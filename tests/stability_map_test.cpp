@@ -19,13 +19,13 @@ namespace {
 mysim::Scene chain(int free_particles, double k, double m) {
   mysim::Scene s;
   s.name = "chain";
-  s.kind = mysim::SystemKind::Chain;
-  s.chain.particles = free_particles + 1;
-  s.chain.rest_length = 0.1;
-  s.chain.particle_mass = m;
-  s.chain.stiffness = k;
-  s.chain.direction = mysim::Vec3(0, -1, 0);
-  s.pins = {0};
+  mysim::ChainScene& chain = s.system.emplace<mysim::ChainScene>();
+  chain.shape.particles = free_particles + 1;
+  chain.shape.rest_length = 0.1;
+  chain.shape.particle_mass = m;
+  chain.shape.stiffness = k;
+  chain.shape.direction = mysim::Vec3(0, -1, 0);
+  chain.start.pins = {0};
   s.gravity = mysim::Vec3(0, -9.8, 0);
   s.integrator.name = "rk4";
   s.dt = 1e-3;
@@ -44,7 +44,7 @@ TEST(HighestFrequency, UniformFixedFreeChainMatchesItsClosedFormHighestMode) {
 
 TEST(HighestFrequency, SingleSpringIsSqrtOfStiffnessOverReducedMass) {
   mysim::Scene s = chain(1, 50.0, 0.5);
-  s.pins.clear();
+  std::get<mysim::ChainScene>(s.system).start.pins.clear();
   s.gravity = mysim::Vec3::Zero();  // two free masses: w = sqrt(k (1/m1 + 1/m2))
   EXPECT_NEAR(highestFrequency(mysim::buildModel(s)), std::sqrt(50.0 * 4.0), 1e-9);
 }
@@ -115,7 +115,7 @@ TEST(SceneStability, ImplicitEnginesAreStableAtTheLargestStepTried) {
 //   o--o--o--o--o--o--o--o   both ends pinned, every spring stretched 10 %, drag, no gravity
 TEST(SceneStability, SeededStartMakesTheLimitIndependentOfRoundOff) {
   mysim::Scene scene = chain(7, 1e4, 0.05);
-  scene.chain.direction = mysim::Vec3(1, 0, 0);
+  std::get<mysim::ChainScene>(scene.system).shape.direction = mysim::Vec3(1, 0, 0);
   scene.gravity = mysim::Vec3::Zero();
   scene.drag = 0.5;
   mysim::Model clean = mysim::buildModel(scene);

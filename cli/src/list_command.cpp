@@ -70,7 +70,7 @@ int listAll(const ListOptions& o) {
       code = kBadInput;
       continue;
     }
-    std::cout << "  " << file << "  " << mysim::systemKindName(scene->kind) << ", "
+    std::cout << "  " << file << "  " << mysim::systemType(*scene) << ", "
               << scene->integrator.name << ", dt " << scene->dt << " s: " << scene->description
               << '\n';
   }

@@ -141,8 +141,8 @@ std::expected<std::string, std::string> EngineRegistry::shippedScene(const std::
 std::expected<mysim::Scene, std::string> EngineRegistry::loadScene(const std::string& path) const {
   auto scene = mysim::loadScene(path, sections_);
   // What a mesh reader skipped is said, not dropped silently (the run goes on without it).
-  if (scene && scene->cloth_mesh) {
-    for (const std::string& w : scene->cloth_mesh->warnings) std::cerr << "warning: " << w << '\n';
+  if (scene) {
+    for (const std::string& w : scene->warnings) std::cerr << "warning: " << w << '\n';
   }
   return scene;
 }

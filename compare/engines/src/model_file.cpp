@@ -163,7 +163,7 @@ std::expected<void, std::string> writeModelFile(const std::string& dir, const my
             {"scene", config.scene_name},
             {"source", config.source},
             {"system", given.isCircle() ? "circle (as its mechanical twin)"
-                                        : mysim::systemKindName(given.kind)},
+                                        : given.kind},
             {"particles", describeParticles(model, start)},
             {"springs", describeSprings(model)},
             {"hinges", describeHinges(model)},

@@ -36,7 +36,7 @@ json summaryJson(const mysim::Model& model, const std::string& scene_name,
                  const std::string& scene_file, const mysim::RunRecord& r) {
   json s = {{"scene", scene_name},
             {"scene_file", scene_file},
-            {"system", mysim::systemKindName(model.kind)},
+            {"system", model.kind},
             {"engine", r.engine},
             {"integrator", r.integrator},
             {"dt", r.dt},

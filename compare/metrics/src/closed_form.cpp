@@ -38,7 +38,7 @@ namespace {
 
 ClosedFormResult circleError(const mysim::Model& model, const mysim::RunRecord& run) {
   double worst = 0.0;
-  const Eigen::Vector2d s = model.circle_start;
+  const Eigen::Vector2d s = *model.circle_start;
   for (std::size_t f = 0; f < run.frames.size(); ++f) {
     const double t = run.times[f];
     const Eigen::Vector2d exact(s.x() * std::cos(t) - s.y() * std::sin(t),

@@ -84,7 +84,7 @@ json modelJson(const mysim::Model& model) {
   // Contact does: every collider and self-collision remove the approaching normal velocity
   // (inelastic), and friction more.
   const bool contact = !model.colliders.empty() || model.self_collision_thickness.has_value();
-  json j = {{"kind", mysim::systemKindName(model.kind)},
+  json j = {{"kind", model.kind},
             {"particles", model.particleCount()},
             {"damped", model.drag > 0.0 || spring_damping || contact},
             {"driven", model.wind.has_value() || model.pin_motion.has_value()},

@@ -23,11 +23,12 @@ PhysicalReference exact(std::string_view quantity, double value, const std::stri
 // A material chain (the one kind whose ends carry half a link's mass) pinned at its two ends,
 // level under gravity: the continuous elastic catenary's midspan sag.
 std::optional<double> levelCableSag(const mysim::Scene& scene) {
-  if (scene.chain_end_mass == 0.0) return std::nullopt;
-  const mysim::ChainShape& c = scene.chain;
+  const auto* chain = std::get_if<mysim::ChainScene>(&scene.system);
+  if (!chain || chain->end_mass == 0.0) return std::nullopt;
+  const mysim::ChainShape& c = chain->shape;
   const double g = scene.gravity.norm();
   if (g == 0.0 || std::abs(c.direction.normalized().dot(scene.gravity / g)) > 1e-12 ||
-      scene.pins != std::vector<int>{0, c.particles - 1}) {
+      chain->start.pins != std::vector<int>{0, c.particles - 1}) {
     return std::nullopt;
   }
   const int links = c.particles - 1;

@@ -55,9 +55,17 @@ std::expected<std::unique_ptr<ResolvedScene>, std::string> sceneAt(const EngineR
 // second order (the discrete catenary's O(h^2), measured 2.06 on the cable). Flex springs
 // converge to no bending at all (their stiffness is per spring, not the material's) and a
 // membrane has no bending to converge: no order to hold them to.
+// The cloth's material, if the scene is a material cloth.
+const std::optional<mysim::ClothMaterial>& clothMaterial(const mysim::Scene& scene) {
+  static const std::optional<mysim::ClothMaterial> none;
+  const auto* cloth = std::get_if<mysim::ClothScene>(&scene.system);
+  return cloth ? cloth->material : none;
+}
+
 std::optional<double> expectedOrder(const mysim::Scene& scene) {
-  if (!scene.cloth_material) return 2.0;  // a material chain (refine takes material scenes only)
-  if (scene.cloth_material->bending == mysim::BendingModel::Hinge) return 2.0;
+  const auto& material = clothMaterial(scene);
+  if (!material) return 2.0;  // a material chain (refine takes material scenes only)
+  if (material->bending == mysim::BendingModel::Hinge) return 2.0;
   return std::nullopt;
 }
 
@@ -114,8 +122,8 @@ std::expected<std::vector<RefineRow>, std::string> runRefinement(const EngineReg
       auto at = sceneAt(registry, path, resolution);
       if (!at) return std::unexpected(at.error());
       const mysim::Scene& s = (*at)->scene;
-      const std::string bending =
-          s.cloth_material ? mysim::bendingModelName(s.cloth_material->bending) : "none (chain)";
+      const auto& material = clothMaterial(s);
+      const std::string bending = material ? mysim::bendingModelName(material->bending) : "none (chain)";
       for (const std::string& engine : settings.engines) {
         RefineRow row;
         row.scene = s.name;

@@ -14,10 +14,10 @@ mysim::Scene oscillatorScene(double stiffness, double mass, double damping_ratio
   mysim::Scene s;
   s.name = "oscillator";
   s.source = "(built-in oscillator)";
-  s.kind = mysim::SystemKind::Particles;
-  s.particles = {{mysim::Vec3::Zero(), mysim::Vec3::Zero(), mass, true},
-                 {mysim::Vec3(1.1, 0, 0), mysim::Vec3::Zero(), mass, false}};
-  s.springs = {{0, 1, 1.0, stiffness, 0.0, mysim::SpringFamily::Custom}};
+  mysim::ParticlesScene& system = s.system.emplace<mysim::ParticlesScene>();
+  system.particles = {{mysim::Vec3::Zero(), mysim::Vec3::Zero(), mass, true},
+                      {mysim::Vec3(1.1, 0, 0), mysim::Vec3::Zero(), mass, false}};
+  system.springs = {{0, 1, 1.0, stiffness, 0.0, mysim::SpringFamily::Custom}};
   s.drag = 2.0 * damping_ratio * std::sqrt(stiffness * mass);
   // The health checks would call a swinging-but-bounded symplectic run "blown up" long before the
   // energy bound below; the bound is this study's criterion, so loosen them.

@@ -58,12 +58,12 @@ std::expected<std::string, std::string> longOscillatorRows(const EngineRegistry&
 mysim::Scene largeCloth(const char* integrator, double dt, int steps) {
   mysim::Scene s;
   s.name = "cloth256";
-  s.kind = mysim::SystemKind::Cloth;
-  s.cloth.rows = s.cloth.cols = 256;
-  s.cloth.particle_mass = 0.5 / (256.0 * 256.0);
-  s.cloth.structural = s.cloth.shear = mysim::SpringParameters{100.0, 0.0};
-  s.cloth.flex = mysim::SpringParameters{10.0, 0.0};
-  s.pins = {0, 255};
+  mysim::ClothScene& cloth = s.system.emplace<mysim::ClothScene>();
+  cloth.shape.rows = cloth.shape.cols = 256;
+  cloth.shape.particle_mass = 0.5 / (256.0 * 256.0);
+  cloth.shape.structural = cloth.shape.shear = mysim::SpringParameters{100.0, 0.0};
+  cloth.shape.flex = mysim::SpringParameters{10.0, 0.0};
+  cloth.start.pins = {0, 255};
   s.gravity = mysim::Vec3(0, -9.8, 0);
   s.integrator.name = integrator;
   s.integrator.cg_tolerance = 1e-6;

@@ -22,17 +22,21 @@ struct GridShape {
   int cols = 0;
 };
 
-// What a scene simulates. Circle: the seed's first-order ODE x' = -y, y' = x (no particles);
-// the others are particles under springs.
-enum class SystemKind { Circle, Chain, Cloth, Particles };
-const char* systemKindName(SystemKind kind);
+// How messages name the scene fields a model's masses and springs came from: each particle and
+// spring its own entry ("system.particles[3].mass", "system.springs[4].stiffness"), one value
+// for all ("system.particle_mass", "system.stiffness"), or one per spring family
+// ("system.shear.stiffness"). A scene kind's builder says which (scene_kind.h).
+enum class FieldNaming { PerItem, Shared, PerFamily };
 
 // The built model: what does not change while stepping, and the contract every engine, sweep and
 // stability study takes (they scale the model, never the parsed scene). Sizes in comments, N
 // particles. Optional force terms are absent unless the scene names them, and then cost nothing.
 struct Model {
-  SystemKind kind = SystemKind::Particles;  // the builder it came from (names fields in messages)
-  Eigen::Vector2d circle_start{1.0, 0.0};   // kind == Circle only: the start point; N = 0
+  std::string kind = "particles";  // the scene's system type it was built from (output names it)
+  FieldNaming naming = FieldNaming::PerItem;  // how messages name its fields
+  bool hangs_from_pins = false;  // a body built to hang from its pins (a chain, a cloth)
+  // Set for the seed's first-order ODE x' = -y, y' = x only: its start point (N = 0).
+  std::optional<Eigen::Vector2d> circle_start;
 
   Vector mass;                  // (N) kg, > 0
   std::vector<char> pinned;     // (N) 1 = pinned: follows pin_motion from its start position
@@ -52,15 +56,14 @@ struct Model {
   std::optional<double> self_collision_thickness;
 
   int particleCount() const { return static_cast<int>(mass.size()); }
-  bool isCircle() const { return kind == SystemKind::Circle; }
-  // A chain or a cloth: a body built to hang from its pins (explicit particles need not).
-  bool hangsFromPins() const { return kind == SystemKind::Chain || kind == SystemKind::Cloth; }
+  bool isCircle() const { return circle_start.has_value(); }
+  bool hangsFromPins() const { return hangs_from_pins; }
   // A cloth with triangles (its grid's or its mesh's): a surface to draw, export or collide.
   bool hasSurface() const { return grid.has_value() || !mesh_triangles.empty(); }
 };
 
-// The scene field a spring's parameter came from, for messages: "system.stiffness" (chain),
-// "system.shear.damping" (cloth), "system.springs[4].stiffness" (explicit particles).
+// The scene field a spring's parameter came from, for messages (FieldNaming): "system.stiffness"
+// (chain), "system.shear.damping" (cloth), "system.springs[4].stiffness" (explicit particles).
 std::string springField(const Model& model, int spring, const std::string& parameter);
 
 // Where a pinned particle must be at time t (its start position moved by the pin motion), and

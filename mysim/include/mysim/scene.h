@@ -6,22 +6,17 @@
 #include <string>
 #include <vector>
 
+#include <variant>
+
 #include "mysim/blowup.h"
-#include "mysim/chain.h"
-#include "mysim/cloth.h"
-#include "mysim/cloth_material.h"
+#include "mysim/chain_scene.h"
+#include "mysim/circle_scene.h"
+#include "mysim/cloth_scene.h"
 #include "mysim/integrator.h"
 #include "mysim/model.h"
-#include "mysim/triangle_mesh.h"
+#include "mysim/particles_scene.h"
 
 namespace mysim {
-
-struct ExplicitParticle {
-  Vec3 position = Vec3::Zero();
-  Vec3 velocity = Vec3::Zero();
-  double mass = 1.0;
-  bool pinned = false;
-};
 
 // Settings a scene may carry for an engine outside mysim, in a top-level section of the engine's
 // own ("bullet": {"classic_iterations": 10}). The engine declares the section; the scene reader
@@ -41,6 +36,10 @@ struct EngineSection {
 // section -> key -> value, for every declared section (defaults where the scene is silent).
 using EngineSettings = std::map<std::string, std::map<std::string, double>>;
 
+// The kinds of system a scene can hold (scene_kind.h): a new kind is its header and source and
+// one name here (and its source in mysim/CMakeLists.txt).
+using SceneSystem = std::variant<CircleScene, ChainScene, ClothScene, ParticlesScene>;
+
 // A scene as the user described it, validated: the plain description every engine is built from.
 // No engine reads JSON. The schema is in docs/scenes.md.
 struct Scene {
@@ -49,21 +48,8 @@ struct Scene {
   std::string source;  // file it came from, for messages
   std::vector<std::string> needed_terms;  // `needs`: model terms it declares (model_terms.h)
 
-  SystemKind kind = SystemKind::Cloth;
-  Eigen::Vector2d circle_start{1.0, 0.0};
-  ChainShape chain;
-  ClothShape cloth;
-  std::optional<ClothMaterial> cloth_material;  // cloth from its material (docs/materials.md)
-  MaterialGrid material_grid;                   // its grid, when cloth_material is set
-  bool material_clamped = false;                // pins "left_clamp"
-  std::optional<TriangleMesh> cloth_mesh;       // a mesh cloth (with cloth_material)
-  double mesh_drag = 0.0;                       // N s/m its damping rate means
-  double chain_end_mass = 0.0;                  // a material chain's end particles (half a link), kg
-  double material_drag = 0.0;                   // N s/m a material chain's damping rate means
-  std::vector<ExplicitParticle> particles;  // kind == Particles
-  std::vector<Spring> springs;              // kind == Particles
-  std::vector<int> pins;                    // chain and cloth: pinned particle indices
-  Vec3 start_velocity = Vec3::Zero();       // chain and cloth: every particle's initial velocity
+  SceneSystem system = ClothScene{};  // "system": one kind and its own fields
+  std::vector<std::string> warnings;   // what reading skipped: said, then the run goes on
 
   Vec3 gravity = Vec3::Zero();
   double drag = 0.0;
@@ -79,6 +65,9 @@ struct Scene {
   BlowUpLimits limits;
   EngineSettings engine_settings;
 };
+
+// The scene file's system.type of the scene's kind ("cloth").
+std::string_view systemType(const Scene& scene);
 
 // The model of a scene: every particle, spring and force term, expanded.
 Model buildModel(const Scene& scene);

@@ -2,29 +2,16 @@
 
 namespace mysim {
 
-const char* systemKindName(SystemKind kind) {
-  switch (kind) {
-    case SystemKind::Circle:
-      return "circle";
-    case SystemKind::Chain:
-      return "chain";
-    case SystemKind::Cloth:
-      return "cloth";
-    case SystemKind::Particles:
-      return "particles";
-  }
-  return "?";
-}
-
 std::string springField(const Model& model, int spring, const std::string& parameter) {
-  switch (model.kind) {
-    case SystemKind::Chain:
+  switch (model.naming) {
+    case FieldNaming::Shared:
       return "system." + parameter;
-    case SystemKind::Cloth:
+    case FieldNaming::PerFamily:
       return std::string("system.") + familyName(model.springs[spring].family) + "." + parameter;
-    default:
-      return "system.springs[" + std::to_string(spring) + "]." + parameter;
+    case FieldNaming::PerItem:
+      break;
   }
+  return "system.springs[" + std::to_string(spring) + "]." + parameter;
 }
 
 Vec3 pinnedPosition(const Model& model, int particle, double t) {

@@ -29,13 +29,8 @@ std::optional<std::string> outOfScale(double value, const std::string& what) {
 // The scene field a particle's mass came from, for messages.
 std::string massField(const Model& model, int p) {
   if (model.material) return "system.material.density";
-  switch (model.kind) {
-    case SystemKind::Chain:
-    case SystemKind::Cloth:
-      return "system.particle_mass";
-    default:
-      return "system.particles[" + std::to_string(p) + "].mass";
-  }
+  if (model.naming != FieldNaming::PerItem) return "system.particle_mass";
+  return "system.particles[" + std::to_string(p) + "].mass";
 }
 
 std::string hingeField(const Model& model) {

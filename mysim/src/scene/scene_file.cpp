@@ -10,7 +10,6 @@
 #include "mysim/json_input.h"
 #include "mysim/model_terms.h"
 #include "mysim/run_limits.h"
-#include "scene_system_readers.h"
 
 namespace mysim {
 namespace {
@@ -45,50 +44,13 @@ void readForces(FieldReader& forces, Scene& scene) {
   }
 }
 
-// Particles and springs a scene will build (springs: an upper bound for a cloth), for the limits.
-std::pair<double, double> sizeOf(const Scene& scene) {
-  switch (scene.kind) {
-    case SystemKind::Circle:
-      return {1, 0};
-    case SystemKind::Chain:
-      return {double(scene.chain.particles), double(scene.chain.particles - 1)};
-    case SystemKind::Cloth: {
-      if (scene.cloth_mesh) {
-        const double n = double(scene.cloth_mesh->vertices.size());
-        return {n, 3 * n};
-      }
-      const double n = double(scene.cloth.rows) * scene.cloth.cols;
-      return {n, 6 * n};
-    }
-    case SystemKind::Particles:
-      return {double(scene.particles.size()), double(scene.springs.size())};
-  }
-  return {0, 0};
-}
-
 void checkWhole(Scene& scene) {
-  const auto [particles, springs] = sizeOf(scene);
-  if (auto error =
-          checkRunLimits(particles, springs, {scene.dt, scene.duration, scene.sample_interval})) {
+  const SystemSize size = std::visit([](const auto& kind) { return kind.size(); }, scene.system);
+  if (auto error = checkRunLimits(size.particles, size.springs,
+                                  {scene.dt, scene.duration, scene.sample_interval})) {
     throw FieldError{error->field, error->message};
   }
-  const int count = static_cast<int>(particles);
-  if (scene.kind == SystemKind::Chain || scene.kind == SystemKind::Cloth) {
-    if (static_cast<int>(scene.pins.size()) >= count) {
-      throw FieldError{"system.pins", "every particle is pinned: nothing would move"};
-    }
-  }
-  if (scene.kind == SystemKind::Particles) {
-    bool any_free = false;
-    for (const ExplicitParticle& p : scene.particles) any_free |= !p.pinned;
-    if (!any_free)
-      throw FieldError{"system.particles", "every particle is pinned: nothing would move"};
-  }
-  if (scene.kind == SystemKind::Circle) {
-    if (auto refusal = circleRefusal(scene.integrator.name)) {
-      throw FieldError{"integrator.name", *refusal};
-    }
-  }
+  std::visit([&](const auto& kind) { kind.checkWhole(scene.integrator); }, scene.system);
 }
 
 bool isPlainName(const std::string& name) {
@@ -113,26 +75,37 @@ void readColliders(FieldReader& top, Scene& scene) {
   }
 }
 
+// The kind whose kType is `type`, made the scene's and read from "system"; false if none is.
+template <class... Kinds>
+bool readKind(std::variant<Kinds...>& kinds, const std::string& type, FieldReader& system,
+              const std::string& source) {
+  const auto read = [&]<class Kind>(Kind*) {
+    if (type != Kind::kType) return false;
+    kinds.template emplace<Kind>().read(system, source);
+    return true;
+  };
+  return (read(static_cast<Kinds*>(nullptr)) || ...);
+}
+
+// "\"circle\", \"chain\", \"cloth\" or \"particles\"": every kind's type, for the message.
+template <class... Kinds>
+std::string kindNames(const std::variant<Kinds...>&) {
+  const std::vector<std::string> types{Kinds::kType...};
+  std::string names;
+  for (std::size_t k = 0; k < types.size(); ++k) {
+    names += (k == 0 ? "" : k + 1 == types.size() ? " or " : ", ") + ("\"" + types[k] + "\"");
+  }
+  return names;
+}
+
 // "system": which kind, and its own fields.
 void readSystem(FieldReader& top, Scene& scene) {
   FieldReader system = top.object("system");
   const std::string type = system.text("type");
-  if (type == "circle") {
-    scene.kind = SystemKind::Circle;
-    readCircle(system, scene);
-  } else if (type == "chain") {
-    scene.kind = SystemKind::Chain;
-    readChain(system, scene);
-  } else if (type == "cloth") {
-    scene.kind = SystemKind::Cloth;
-    readCloth(system, scene);
-  } else if (type == "particles") {
-    scene.kind = SystemKind::Particles;
-    readParticles(system, scene);
-  } else {
-    failField("system.type", "\"circle\", \"chain\", \"cloth\" or \"particles\"",
-              system.raw("type"));
+  if (!readKind(scene.system, type, system, scene.source)) {
+    failField("system.type", kindNames(scene.system), system.raw("type"));
   }
+  scene.warnings = std::visit([](const auto& kind) { return kind.warnings(); }, scene.system);
   if (system.has("self_collision")) {
     FieldReader self = system.object("self_collision");
     scene.self_collision_thickness = self.positive("thickness");
@@ -197,21 +170,19 @@ void readEngineSections(FieldReader& top, const std::vector<EngineSection>& sect
   }
 }
 
-// What a material cloth's constants mean for the rest of the scene: its damping rate is the
-// drag (so forces.drag would say it twice), and hinges need a preconditioner that sees them.
-void applyMaterialForces(Scene& scene) {
-  const ClothMaterial& m = *scene.cloth_material;
-  if (m.damping_rate > 0.0) {
+// What a material's constants mean for the rest of the scene: its damping rate is the drag (so
+// forces.drag would say it twice), and hinges need a preconditioner that sees them.
+void applyMaterialTerms(Scene& scene) {
+  const auto drag = std::visit([](const auto& kind) { return kind.materialDrag(); }, scene.system);
+  if (drag) {
     if (scene.drag > 0.0) {
       throw FieldError{"forces.drag",
                        "not with system.material.damping_rate: the rate gives the drag"};
     }
-    scene.drag = scene.cloth_mesh ? scene.mesh_drag
-                                  : m.damping_rate * m.density * scene.material_grid.dx *
-                                        scene.material_grid.dy;
+    scene.drag = *drag;
   }
-  if (m.bending == BendingModel::Hinge &&
-      scene.integrator.preconditioner == CgPreconditioner::Ssor) {
+  const bool hinges = std::visit([](const auto& kind) { return kind.bendsByHinges(); }, scene.system);
+  if (hinges && scene.integrator.preconditioner == CgPreconditioner::Ssor) {
     throw FieldError{"integrator.cg_preconditioner",
                      "\"block-jacobi\", \"jacobi\" or \"auto\" with hinge bending (SSOR sweeps "
                      "the springs' matrix alone)"};
@@ -261,13 +232,7 @@ Scene readScene(const json& root, const std::string& source,
   readColliders(top, scene);
 
   readIntegrator(top, scene);
-  if (scene.cloth_material) applyMaterialForces(scene);
-  if (scene.material_drag > 0.0) {  // a chain material's damping rate
-    if (scene.drag > 0.0) {
-      throw FieldError{"forces.drag", "not with system.material.damping_rate: the rate gives the drag"};
-    }
-    scene.drag = scene.material_drag;
-  }
+  applyMaterialTerms(scene);
 
   if (top.has("output")) {
     FieldReader r = top.object("output");

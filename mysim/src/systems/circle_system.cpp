@@ -36,8 +36,7 @@ State CircleSystem::initialState() const { return State{0.0, start_}; }
 
 Model circleTwin(const Model& circle) {
   Model twin;
-  twin.kind = SystemKind::Particles;
-  const Eigen::Vector2d p = circle.circle_start;
+  const Eigen::Vector2d p = *circle.circle_start;
   twin.mass = Vector::Ones(2);
   twin.pinned = {1, 0};
   twin.start_position = Vector::Zero(6);

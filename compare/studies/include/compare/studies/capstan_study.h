@@ -29,6 +29,25 @@ struct CapstanMeasurement {
   double error() const { return measured_load / predicted_load - 1.0; }
 };
 
+// A capstan scene ready for trials: its model, its capstan (capstanOf), the closed form's
+// holding load, and whether a given load holds.
+struct CapstanTrials {
+  std::string scene;
+  mysim::Model model;
+  Capstan capstan;
+  RunConfig config;
+  double predicted_load = 0.0;  // kg
+
+  // Whether the load end holds `load` kg in this engine: the scene run whole, its load end
+  // drifting less than kHeld over the run's last half. An engine that refuses the scene or a run
+  // that blows up answers with the reason.
+  std::expected<bool, std::string> holds(const EngineRegistry& registry, const std::string& engine,
+                                         double load) const;
+};
+
+// Fails, saying why, on a scene that is not a capstan.
+std::expected<CapstanTrials, std::string> capstanTrials(const mysim::Scene& scene);
+
 // The scene must be a capstan (capstanOf); an engine that refuses it or a run that blows up ends
 // the measurement with the reason.
 std::expected<CapstanMeasurement, std::string> measureCapstan(const EngineRegistry& registry,

@@ -23,18 +23,16 @@ constexpr double kWithin = 0.02;
 
 // mysim's holding load lies within kWithin of the closed form's: the load end holds a load kWithin
 // under it and slips under one kWithin over it.
-void expectHoldingLoadWithinTheBound(const mysim::Scene& scene) {
+void expectHoldingLoadWithinTheBound(const CapstanTrials& trials) {
   const EngineRegistry registry;
-  auto trials = capstanTrials(scene);
-  ASSERT_TRUE(trials) << trials.error();
-  const double predicted = trials->predicted_load;
-  auto under = trials->holds(registry, "mysim", (1.0 - kWithin) * predicted);
-  ASSERT_TRUE(under) << scene.name << ": " << under.error();
-  EXPECT_TRUE(*under) << scene.name << ": slips under " << (1.0 - kWithin) * predicted
+  const double predicted = trials.predicted_load;
+  auto under = trials.holds(registry, "mysim", (1.0 - kWithin) * predicted);
+  ASSERT_TRUE(under) << trials.scene << ": " << under.error();
+  EXPECT_TRUE(*under) << trials.scene << ": slips under " << (1.0 - kWithin) * predicted
                       << " kg, 2 % under the closed form's holding load " << predicted << " kg";
-  auto over = trials->holds(registry, "mysim", (1.0 + kWithin) * predicted);
-  ASSERT_TRUE(over) << scene.name << ": " << over.error();
-  EXPECT_FALSE(*over) << scene.name << ": holds " << (1.0 + kWithin) * predicted
+  auto over = trials.holds(registry, "mysim", (1.0 + kWithin) * predicted);
+  ASSERT_TRUE(over) << trials.scene << ": " << over.error();
+  EXPECT_FALSE(*over) << trials.scene << ": holds " << (1.0 + kWithin) * predicted
                       << " kg, 2 % over the closed form's holding load " << predicted << " kg";
 }
 
@@ -45,7 +43,7 @@ TEST(Capstan, MysimsHoldingLoadIsWithinTwoPercentOfEulerEytelweinAtThreeWrapAngl
     auto trials = capstanTrials(scene);
     ASSERT_TRUE(trials) << name << ": " << trials.error();
     EXPECT_NEAR(trials->capstan.wrap * 180.0 / std::numbers::pi, degrees, 0.5) << name << ": the wrap read from the start";
-    expectHoldingLoadWithinTheBound(scene);
+    expectHoldingLoadWithinTheBound(*trials);
   }
 }
 
@@ -84,7 +82,7 @@ TEST(Capstan, AnotherCoefficientOnAnotherSphereHoldsWithinTwoPercent) {
   auto trials = capstanTrials(*scene);
   ASSERT_TRUE(trials) << trials.error();
   EXPECT_NEAR(trials->capstan.ratio(), std::exp(0.5 * std::numbers::pi), 1e-3);
-  expectHoldingLoadWithinTheBound(*scene);
+  expectHoldingLoadWithinTheBound(*trials);
 }
 
 // The per-run closed form: a load within the holding load does not sink over the run's last half;

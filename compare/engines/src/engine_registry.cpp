@@ -142,7 +142,7 @@ std::expected<mysim::Scene, std::string> EngineRegistry::loadScene(const std::st
   auto scene = mysim::loadScene(path, sections_);
   // What a mesh reader skipped is said, not dropped silently (the run goes on without it).
   if (scene) {
-    for (const std::string& w : scene->warnings) std::cerr << "warning: " << w << '\n';
+    for (const std::string& w : mysim::sceneWarnings(*scene)) std::cerr << "warning: " << w << '\n';
   }
   return scene;
 }

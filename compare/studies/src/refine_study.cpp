@@ -56,14 +56,13 @@ std::expected<std::unique_ptr<ResolvedScene>, std::string> sceneAt(const EngineR
 // converge to no bending at all (their stiffness is per spring, not the material's) and a
 // membrane has no bending to converge: no order to hold them to.
 // The cloth's material, if the scene is a material cloth.
-const std::optional<mysim::ClothMaterial>& clothMaterial(const mysim::Scene& scene) {
-  static const std::optional<mysim::ClothMaterial> none;
+const mysim::ClothMaterial* clothMaterial(const mysim::Scene& scene) {
   const auto* cloth = std::get_if<mysim::ClothScene>(&scene.system);
-  return cloth ? cloth->material : none;
+  return cloth && cloth->material ? &*cloth->material : nullptr;
 }
 
 std::optional<double> expectedOrder(const mysim::Scene& scene) {
-  const auto& material = clothMaterial(scene);
+  const mysim::ClothMaterial* material = clothMaterial(scene);
   if (!material) return 2.0;  // a material chain (refine takes material scenes only)
   if (material->bending == mysim::BendingModel::Hinge) return 2.0;
   return std::nullopt;
@@ -122,7 +121,7 @@ std::expected<std::vector<RefineRow>, std::string> runRefinement(const EngineReg
       auto at = sceneAt(registry, path, resolution);
       if (!at) return std::unexpected(at.error());
       const mysim::Scene& s = (*at)->scene;
-      const auto& material = clothMaterial(s);
+      const mysim::ClothMaterial* material = clothMaterial(s);
       const std::string bending = material ? mysim::bendingModelName(material->bending) : "none (chain)";
       for (const std::string& engine : settings.engines) {
         RefineRow row;

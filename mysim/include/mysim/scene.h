@@ -49,7 +49,6 @@ struct Scene {
   std::vector<std::string> needed_terms;  // `needs`: model terms it declares (model_terms.h)
 
   SceneSystem system = ClothScene{};  // "system": one kind and its own fields
-  std::vector<std::string> warnings;   // what reading skipped: said, then the run goes on
 
   Vec3 gravity = Vec3::Zero();
   double drag = 0.0;
@@ -68,6 +67,9 @@ struct Scene {
 
 // The scene file's system.type of the scene's kind ("cloth").
 std::string_view systemType(const Scene& scene);
+
+// What reading the scene skipped (a mesh file's unsupported lines): said, then the run goes on.
+std::vector<std::string> sceneWarnings(const Scene& scene);
 
 // The model of a scene: every particle, spring and force term, expanded.
 Model buildModel(const Scene& scene);

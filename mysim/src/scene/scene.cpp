@@ -20,6 +20,10 @@ std::string_view systemType(const Scene& scene) {
   return std::visit([](const auto& kind) -> std::string_view { return kind.kType; }, scene.system);
 }
 
+std::vector<std::string> sceneWarnings(const Scene& scene) {
+  return std::visit([](const auto& kind) { return kind.warnings(); }, scene.system);
+}
+
 Model buildModel(const Scene& scene) {
   Model model;
   std::visit([&](const auto& kind) { kind.build(model); }, scene.system);

@@ -105,7 +105,6 @@ void readSystem(FieldReader& top, Scene& scene) {
   if (!readKind(scene.system, type, system, scene.source)) {
     failField("system.type", kindNames(scene.system), system.raw("type"));
   }
-  scene.warnings = std::visit([](const auto& kind) { return kind.warnings(); }, scene.system);
   if (system.has("self_collision")) {
     FieldReader self = system.object("self_collision");
     scene.self_collision_thickness = self.positive("thickness");

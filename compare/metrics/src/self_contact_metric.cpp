@@ -68,37 +68,55 @@ void keepCloser(std::optional<double>& best, double d) {
   if (!best || d < *best) best = d;
 }
 
-// One cloth frame: every triangle against the nodes and triangles within a cell of it.
-FrameContact clothFrame(const Mesh& m, const std::vector<Vec3>& x, mysim::SpatialGrid& grid) {
+// A triangle's bounding box, padded by a hair (1e-9 of the cell) so that rounding in the crossing
+// test can never count a pair whose boxes the test below kept apart.
+struct Box {
+  Vec3 low, high;
+  bool overlaps(const Box& o) const {
+    return (low.array() <= o.high.array()).all() && (o.low.array() <= high.array()).all();
+  }
+};
+
+std::vector<Box> triangleBoxes(const Mesh& m, const std::vector<Vec3>& x, double pad) {
+  std::vector<Box> boxes(m.triangles.size());
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    const Vec3 &a = x[m.triangles[t][0]], &b = x[m.triangles[t][1]], &c = x[m.triangles[t][2]];
+    boxes[t] = {a.cwiseMin(b).cwiseMin(c).array() - pad, a.cwiseMax(b).cwiseMax(c).array() + pad};
+  }
+  return boxes;
+}
+
+// One cloth frame: every triangle against the nodes and triangles within a cell of it. Two
+// triangles that cross have overlapping boxes, so only those go to the crossing test (most
+// candidates of a cell's neighbourhood do not: the metric's cost was most of a cloth sweep's).
+FrameContact clothFrame(const Mesh& m, const std::vector<Vec3>& x, mysim::SpatialGrid& grid,
+                        std::vector<int>& seen) {
   double longest = 0.0;
   for (const auto& e : m.edges) longest = std::max(longest, (x[e[0]] - x[e[1]]).norm());
   const double cell = std::max(longest, 1e-9);
   grid.build(x, cell);
+  const std::vector<Box> boxes = triangleBoxes(m, x, 1e-9 * cell);
+  seen.assign(m.triangles.size(), -1);  // the last triangle that took each as a candidate
   FrameContact f;
-  std::vector<int> others;
   for (int t = 0; t < static_cast<int>(m.triangles.size()); ++t) {
     const Eigen::Vector3i& tri = m.triangles[t];
     const Vec3 a = x[tri[0]], b = x[tri[1]], c = x[tri[2]];
+    const Vec3 first[3] = {a, b, c};
     const Vec3 reach = Vec3::Constant(cell);
-    others.clear();
     grid.forEachNear(a.cwiseMin(b).cwiseMin(c) - reach, a.cwiseMax(b).cwiseMax(c) + reach, [&](int p) {
       if (!nearTriangle(m, p, tri)) {
         const Vec3 w = mysim::closestOnTriangle(x[p], a, b, c);
         keepCloser(f.distance, (x[p] - (w[0] * a + w[1] * b + w[2] * c)).norm());
       }
       for (int other : m.node_pieces[p]) {
-        if (other > t) others.push_back(other);
+        if (other <= t || seen[other] == t) continue;
+        seen[other] = t;
+        const Eigen::Vector3i& o = m.triangles[other];
+        if (shareVertex(tri, o) || !boxes[t].overlaps(boxes[other])) continue;
+        const Vec3 second[3] = {x[o[0]], x[o[1]], x[o[2]]};
+        if (mysim::trianglesIntersect(first, second)) ++f.intersections;
       }
     });
-    std::sort(others.begin(), others.end());
-    others.erase(std::unique(others.begin(), others.end()), others.end());
-    const Vec3 first[3] = {a, b, c};
-    for (int other : others) {
-      const Eigen::Vector3i& o = m.triangles[other];
-      if (shareVertex(tri, o)) continue;
-      const Vec3 second[3] = {x[o[0]], x[o[1]], x[o[2]]};
-      if (mysim::trianglesIntersect(first, second)) ++f.intersections;
-    }
   }
   return f;
 }
@@ -135,10 +153,11 @@ std::optional<SelfContact> selfContactOverRun(const mysim::Model& model, const m
   SelfContact result;
   if (cloth) result.intersections = 0;
   mysim::SpatialGrid grid;
+  std::vector<int> seen;
   std::vector<Vec3> x(model.particleCount());
   for (std::size_t f = 0; f < run.frames.size(); ++f) {
     for (int p = 0; p < model.particleCount(); ++p) x[p] = run.frames[f].row(p).head<3>().transpose();
-    const FrameContact frame = cloth ? clothFrame(mesh, x, grid) : chainFrame(mesh, x, grid);
+    const FrameContact frame = cloth ? clothFrame(mesh, x, grid, seen) : chainFrame(mesh, x, grid);
     if (cloth && frame.intersections > *result.intersections) {
       result.intersections = frame.intersections;
       result.intersections_time = run.times[f];

@@ -138,8 +138,10 @@ std::optional<ClosedFormResult> slidingError(const mysim::Model& model, const my
   }
   const double distance = slideDisplacement(block, run.times.back() - run.times.front()).norm();
   const bool sticks = distance == 0.0;
-  return ClosedFormError{sticks ? "rest on a plane (static friction holds)" : "sliding distance on a plane",
-                         worst, distance};
+  return ClosedFormError{
+      .quantity = sticks ? "rest on a plane (static friction holds)" : "sliding distance on a plane",
+      .error = worst,
+      .exact = distance};
 }
 
 }  // namespace springcheck

@@ -141,7 +141,8 @@ std::optional<ClosedFormResult> slidingError(const mysim::Model& model, const my
   return ClosedFormError{
       .quantity = sticks ? "rest on a plane (static friction holds)" : "sliding distance on a plane",
       .error = worst,
-      .exact = distance};
+      .exact = distance,
+      .motion_left = std::nullopt};
 }
 
 }  // namespace springcheck

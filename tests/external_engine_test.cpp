@@ -61,12 +61,14 @@ TEST(ModelFile, NamesOnlyTheParametersOfTheIntegratorInUse) {
   };
   using V = std::vector<std::string>;
   EXPECT_EQ(keys("rk4"), V({"name"}));
-  EXPECT_EQ(keys("xpbd"), V({"iterations", "max_iterations", "name", "substeps", "tolerance"}));
+  EXPECT_EQ(keys("xpbd"),
+            V({"iterations", "max_halvings", "max_iterations", "name", "substeps", "tolerance"}));
   EXPECT_EQ(keys("dopri5"), V({"abs_tolerance", "name", "rel_tolerance"}));
   EXPECT_EQ(keys("backward-euler"),
             V({"cg_max_iterations", "cg_preconditioner", "cg_tolerance", "name"}));
   EXPECT_EQ(keys("vbd"),
-            V({"acceleration_rho", "iterations", "max_iterations", "name", "tolerance"}));
+            V({"acceleration_rho", "iterations", "max_halvings", "max_iterations", "name",
+               "tolerance"}));
 }
 
 TEST(ModelFile, HoldsEveryParticleSpringFrameTimeAndTheWindTable) {

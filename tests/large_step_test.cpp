@@ -200,22 +200,21 @@ Scene otherCantilever(const std::string& integrator, double dt) {
 class LargeStepCantilever : public ::testing::TestWithParam<const char*> {};
 
 // Every family runs it whole at 1/60 s and 1/240 s (with ten fixed passes all three blew up at
-// 1/60 s). XPBD and VBD settle within 0.5 mm of backward Euler at the same step (measured at most
-// 0.07 mm). Local/global's constant matrix turns the strip's stiff membrane slowly: at 1/60 s it
-// stops at its 1000-pass cap, 3 mm off; a run that ends farther than 0.5 mm must say it did not
-// converge (solver-not-converged) and stay within 5 mm.
+// 1/60 s), every step solved, and settles within 0.5 mm of backward Euler at the same step.
+// Local/global's constant matrix turns the strip's stiff membrane slowly: at 1/60 s its passes
+// stopped at the 1000-pass cap, 3 mm off; those steps are now halved until they solve
+// (integrators/halving_steps.h), and it settles as the others do.
 TEST_P(LargeStepCantilever, RunsWholeAtOneSixtiethAndOneTwoFortiethAndSettlesWhereBackwardEulerDoes) {
   for (double dt : {1.0 / 60.0, 1.0 / 240.0}) {
     const RunRecord reference = testing::simulateScene(otherCantilever("backward-euler", dt));
     ASSERT_FALSE(reference.blowup) << describe(reference);
     const RunRecord run = testing::simulateScene(otherCantilever(GetParam(), dt));
     ASSERT_FALSE(run.blowup) << GetParam() << " at " << dt << " s: " << describe(run);
+    EXPECT_EQ(run.counts.solver_failures, 0) << GetParam() << " at " << dt << " s";
     const double off = settledDistance(run.frames.back(), reference.frames.back());
-    if (off > 0.5e-3) {
-      EXPECT_EQ(std::string(GetParam()), "local-global") << dt << " s: " << off << " m";
-      EXPECT_EQ(run.status(), "solver-not-converged") << GetParam() << " " << off << " m";
-      EXPECT_LT(off, 5e-3) << GetParam();
-    }
+    EXPECT_LT(off, 0.5e-3) << GetParam() << " at " << dt << " s";
+    std::printf("%s at %.5f s: %.3g m from backward Euler, %ld of %ld tries halved\n", GetParam(),
+                dt, off, run.counts.rejected, run.counts.accepted + run.counts.rejected);
   }
 }
 

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "mysim/integrator.h"
+#include "integrators/halving_steps.h"
 
 namespace mysim {
 
@@ -74,7 +75,15 @@ IntegratorParameter accelerationRho(const char* fallback) {
 }
 const IntegratorParameter kMaxPasses = {
     "max_iterations", "1000", "most passes per step (per substep) when tolerance > 0; a step that "
-    "stops there counts a solver failure", true, 1, 1000000, true};
+    "stops there is redone as two halves (max_halvings), or counts a solver failure", true, 1,
+    1000000, true};
+// 6 (a 1/60 s step down to 1/3840 s): the shipped cantilever at 32 cells and 1/60 s (h^2 k / m ~
+// 1e5, the stiffest step of a shipped scene) is solved by every family at depth 4 or less
+// (docs/performance.md "Halving unsolved steps"); two levels spare for stiffer scenes. Scenes
+// whose steps solve at h never halve (the same bits as the plain solver).
+const IntegratorParameter kMaxHalvings = {
+    "max_halvings", "6", "times a step the passes cannot solve within max_iterations is halved "
+    "(halves solved the same way, the level kept for the next steps); 0: never", true, 0, 20, true};
 // XPBD's defaults: the small-steps form (Macklin 2019): ten substeps of at least one pass. With
 // one substep its passes pull each spring back from its predicted stretch with lambda starting
 // at 0 every step, and on a hanging cloth the tension near the pins settles 4.5 mm off backward
@@ -87,13 +96,13 @@ const std::vector<IntegratorParameter> kXpbdParameters = {
      true, 1, 10000, true},
     {"iterations", "1", "Gauss-Seidel passes over the springs per substep (at least)", true, 1,
      10000, true},
-    passTolerance("1e-2"), kMaxPasses};
+    passTolerance("1e-2"), kMaxPasses, kMaxHalvings};
 // At least ten passes for the two implicit-Euler solvers (the fixed-count form's old default, kept
 // as the floor: a step the tolerance lets stop sooner still makes them), then the tolerance.
 const std::vector<IntegratorParameter> kLocalGlobalParameters = {
     {"iterations", "10", "local/global passes per step (each: one solve with the factor)", true, 1,
      10000, true},
-    passTolerance("1e-2"), kMaxPasses,
+    passTolerance("1e-2"), kMaxPasses, kMaxHalvings,
     // 0.99 measured (docs/performance.md "Chebyshev for local/global"): every shipped scene at its
     // own step and at 1/60 s, rho 0 / 0.99 / 0.995: no run changes status for the worse, and
     // cloth_stiff at 1/60 s, the cantilever and the Cusick drape at their steps and the flex strip
@@ -103,11 +112,14 @@ const std::vector<IntegratorParameter> kLocalGlobalParameters = {
     accelerationRho("0.99")};
 const std::vector<IntegratorParameter> kVbdParameters = {
     {"iterations", "10", "passes over the vertices per step", true, 1, 10000, true},
-    passTolerance("1e-3"), kMaxPasses,
+    passTolerance("1e-3"), kMaxPasses, kMaxHalvings,
     // 0.95 measured (docs/performance.md): on the 32 x 32 cloth at 1/60 s it cuts the passes to
     // 0.1 % 3.3 times (126 to 38 a step), on the cantilever 2 to 3 times with fewer steps at the
     // cap, the same settled shape within 1e-6 m; 0.98 overshoots (more passes than none).
     accelerationRho("0.95")};
+std::unique_ptr<Integrator> halving(std::unique_ptr<Integrator> solver, const IntegratorSettings& s) {
+  return halvingUnsolvedSteps(std::move(solver), static_cast<int>(s.value("max_halvings")));
+}
 const std::vector<IntegratorParameter> kAdaptiveParameters = {
     {"abs_tolerance", "1e-6", "per-component absolute error bound per step"},
     {"rel_tolerance", "1e-6", "relative error bound per step"}};
@@ -144,15 +156,15 @@ const std::vector<IntegratorInfo>& integratorCatalog() {
        [](double) { return Limit(); }, kAdaptiveParameters},
       // Iterative: no theory line (above the catalogue).
       {"xpbd", "", "extended position-based dynamics: springs as compliant distance constraints",
-       true, [](S s) { return makeXpbd(s); }, 1, F::PositionBased, [](double) { return Limit(); },
+       true, [](S s) { return halving(makeXpbd(s), s); }, 1, F::PositionBased, [](double) { return Limit(); },
        kXpbdParameters},
       // Iterative: no theory line (above the catalogue).
       {"local-global", "",
        "Liu et al. 2013 fast mass-spring: implicit Euler by local/global passes, one factorisation",
-       true, [](S s) { return makeLocalGlobal(s); }, 1, F::LocalGlobal,
+       true, [](S s) { return halving(makeLocalGlobal(s), s); }, 1, F::LocalGlobal,
        [](double) { return Limit(); }, kLocalGlobalParameters},
       {"vbd", "", "vertex block descent (Chen et al. 2024): implicit Euler by per-vertex Newton",
-       true, [](S s) { return makeVertexBlockDescent(s); }, 1, F::BlockDescent,
+       true, [](S s) { return halving(makeVertexBlockDescent(s), s); }, 1, F::BlockDescent,
        [](double) { return Limit(); }, kVbdParameters},
   };
   return catalog;

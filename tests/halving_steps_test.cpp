@@ -1,7 +1,7 @@
 // A step an iterative solver cannot solve is redone as two halves (integrators/halving_steps.h):
 // the pieces tile the step exactly, the level that worked is kept and a coarser one retried after
-// eight calm steps, a run whose steps all solve is the plain solver's bits, and the shipped
-// cantilever's stiffest case is solved in every iterative family.
+// eight calm steps, a scene no level solves stops halving, a run whose steps all solve is the
+// plain solver's bits, and VBD solves the shipped cantilever where its plain passes stop short.
 // ctest-label: physics
 // 4.6 s in Release, ten times that under the sanitizers, where the three tests above run the
 // halving's code:
@@ -77,14 +77,23 @@ TEST(HalvingSteps, AfterEightCalmStepsACoarserLevelIsTriedOnce) {
   EXPECT_NEAR(run.s.y[0], 10 * h, 1e-12) << "eighty pieces' sum";
 }
 
-TEST(HalvingSteps, AtTheDeepestLevelAnUnsolvedPieceIsKeptAndCountedAFailure) {
+TEST(HalvingSteps, AtTheDeepestLevelAnUnsolvedPieceIsKeptAndHalvingStopsForTheRun) {
   Halving run;
   auto stepper = halvingUnsolvedSteps(std::make_unique<SolvesUpTo>(0.001, run.pieces), 2);
   const StepCounts counts = stepper->step(run.system, run.s, 0.1);
-  EXPECT_EQ(counts.accepted, 4);
-  EXPECT_EQ(counts.solver_failures, 4);
-  EXPECT_EQ(counts.rejected, 3);
+  // h and its first half fail; the first quarter (the deepest level) fails too and is kept; the
+  // rest of the step goes on unhalved: the second quarter, then the second half whole.
+  EXPECT_EQ(run.pieces, std::vector<double>({0.1, 0.05, 0.025, 0.025, 0.05}));
+  EXPECT_EQ(counts.rejected, 2);
+  EXPECT_EQ(counts.accepted, 3);
+  EXPECT_EQ(counts.solver_failures, 3);
   EXPECT_DOUBLE_EQ(run.s.y[0], 0.1);
+  EXPECT_EQ(run.s.t, 0.1);
+  run.pieces.clear();
+  const StepCounts next = stepper->step(run.system, run.s, 0.1);
+  EXPECT_EQ(run.pieces, std::vector<double>({0.1})) << "whole steps, as the plain solver";
+  EXPECT_EQ(next.rejected, 0);
+  EXPECT_EQ(next.solver_failures, 1);
 }
 
 // The shipped cantilever at 16 cells and 1/60 s for its first 0.3 s (its stiff fall): plain VBD

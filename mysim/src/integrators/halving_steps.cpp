@@ -36,7 +36,15 @@ class HalvingSteps final : public Integrator {
  private:
   // One piece of the step at `level` (2^level pieces a step): solved, or restored and halved.
   StepCounts solveOrHalve(OdeSystem& system, State& s, double h, int level) {
-    if (level >= max_halvings_) return solver_->step(system, s, h);
+    if (given_up_) return solver_->step(system, s, h);
+    if (level >= max_halvings_) {
+      // Unsolved at the deepest level: this scene is beyond what halving buys (rigid constraints,
+      // a tolerance below round-off), so the run stops paying for tries and goes on as the plain
+      // solver, its failures counted (the rest of this step at its level, then whole steps).
+      const StepCounts deepest = solver_->step(system, s, h);
+      given_up_ = deepest.solver_failures > 0;
+      return deepest;
+    }
     saved_[level] = s;
     StepCounts tried = solver_->step(system, s, h);
     if (tried.solver_failures == 0) return tried;
@@ -55,6 +63,10 @@ class HalvingSteps final : public Integrator {
   // After kCalmSteps steps solved without a new halving, one level coarser is tried again: the
   // stiff phase (a fall, a landing) may be over.
   void relax() {
+    if (given_up_) {
+      level_ = 0;
+      return;
+    }
     calm_ = halved_ ? 0 : calm_ + 1;
     if (calm_ >= kCalmSteps && level_ > 0) --level_, calm_ = 0;
   }
@@ -67,6 +79,7 @@ class HalvingSteps final : public Integrator {
   int level_ = 0;  // the pieces a step starts in: 2^level_
   int calm_ = 0;   // steps since the last halving
   bool halved_ = false;
+  bool given_up_ = false;  // a piece at the deepest level stayed unsolved: no more halving
   std::vector<State> saved_;  // each level's start, to restore on a failed try
 };
 

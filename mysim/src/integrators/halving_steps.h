@@ -11,10 +11,12 @@
 // estimate's.
 //
 // The level that worked is kept for the next steps (a failed attempt costs a whole pass cap) and
-// one coarser level is tried again after kCalmSteps steps solved at it. A step at the deepest
+// one coarser level is tried again after kCalmSteps steps solved at it. A piece at the deepest
 // level allowed (max_halvings) that still stops at the cap is kept and counted a solver failure,
-// as before. max_halvings = 0 is the plain solver (every step at h). A run whose steps all solve
-// at h is the same bits either way.
+// as before, and halving stops for the rest of the run: a scene no level solves (rigid
+// constraints) would otherwise pay 2^(max_halvings + 1) - 1 tries a step for nothing (measured:
+// the zero-compliance XPBD chain of the tests, 0.3 s -> 11.5 s). max_halvings = 0 is the plain
+// solver (every step at h). A run whose steps all solve at h is the same bits either way.
 #include <memory>
 
 #include "mysim/integrator.h"

@@ -78,9 +78,10 @@ const IntegratorParameter kMaxPasses = {
     "stops there is redone as two halves (max_halvings), or counts a solver failure", true, 1,
     1000000, true};
 // 6 (a 1/60 s step down to 1/3840 s): the shipped cantilever at 32 cells and 1/60 s (h^2 k / m ~
-// 1e5, the stiffest step of a shipped scene) is solved by every family at depth 4 or less
-// (docs/performance.md "Halving unsolved steps"); two levels spare for stiffer scenes. Scenes
-// whose steps solve at h never halve (the same bits as the plain solver).
+// 1e5, the stiffest step of a shipped scene) is solved by every family with no piece left
+// unsolved, in 2 to 4.3 pieces a step on average (docs/performance.md "Halving unsolved steps");
+// the levels beyond are room for stiffer scenes, and a scene no level solves stops halving after
+// its first failure at the deepest. Scenes whose steps solve at h never halve (the plain bits).
 const IntegratorParameter kMaxHalvings = {
     "max_halvings", "6", "times a step the passes cannot solve within max_iterations is halved "
     "(halves solved the same way, the level kept for the next steps); 0: never", true, 0, 20, true};

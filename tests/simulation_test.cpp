@@ -149,3 +149,42 @@ INSTANTIATE_TEST_SUITE_P(Drivers, ExternalWork, ::testing::Values("pins", "wind"
 
 }  // namespace
 }  // namespace mysim
+
+namespace mysim {
+namespace {
+
+RunRecord runUntilRest(Scene scene, double rest_displacement) {
+  auto system = makeSystem(scene);
+  IntegratorStepper stepper(*system, std::move(makeIntegrator(scene.integrator).value()));
+  RunSettings settings{scene.dt, scene.duration, scene.sample_interval};
+  settings.rest_displacement = rest_displacement;
+  return simulate(*system, stepper, system->initialState(), settings);
+}
+
+// RunSettings::rest_displacement: the seed chain, damped hard, comes to rest and its run stops
+// there, at the state the whole run ends in; the undamped pendulum swings and runs whole.
+TEST(RestStop, ADampedChainEndsAtItsRestAndASwingingPendulumRunsWhole) {
+  Scene chain = sceneFile("chain.json");
+  chain.integrator.name = "backward-euler";
+  chain.drag = 0.25;  // 5 /s
+  chain.dt = 0.01;
+  chain.duration = 60.0;
+  const RunRecord whole = runUntilRest(chain, 0.0);
+  const RunRecord rested = runUntilRest(chain, 1e-11);
+  ASSERT_TRUE(rested.rested_at);
+  EXPECT_FALSE(whole.rested_at);
+  EXPECT_LT(*rested.rested_at, 0.5 * chain.duration);
+  EXPECT_EQ(rested.steps, std::lround(*rested.rested_at / chain.dt));
+  const double apart =
+      (whole.frames.back() - rested.frames.back()).leftCols<3>().cwiseAbs().maxCoeff();
+  EXPECT_LT(apart, 1e-9) << "the rest it stopped at is the whole run's end";
+
+  Scene pendulum = sceneFile("pendulum.json");
+  pendulum.integrator.name = "verlet";
+  const RunRecord swinging = runUntilRest(pendulum, 1e-6);
+  EXPECT_FALSE(swinging.rested_at);
+  EXPECT_EQ(swinging.steps, stepCount({pendulum.dt, pendulum.duration}));
+}
+
+}  // namespace
+}  // namespace mysim

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "compare/engines/engine_registry.h"
+#include "compare/engines/work_count.h"
 #include "compare/studies/natural_frequency.h"
 #include "compare/studies/stability.h"
 #include "mysim/scene_file.h"
@@ -101,6 +102,37 @@ TEST(SceneStability, ImplicitEnginesAreStableAtTheLargestStepTried) {
     const StabilityLimit l =
         sceneStability(EngineRegistry(), mysim::buildModel(scene), config, engine, {});
     EXPECT_EQ(l.status, "stable-at-max") << engine;  // h w_max = 30
+  }
+}
+
+// A damped chain hanging under gravity comes to rest at the steps an implicit engine holds, and
+// a trial that has ends early (SceneStabilitySettings::rest_of_seed): the same limits as trials
+// run whole, in fewer steps; an explicit engine's unstable trials still fail as before.
+TEST(SceneStability, TrialsAtRestEndEarlyWithTheLimitsOfWholeTrials) {
+  mysim::Scene scene = chain(9, 1e4, 0.05);
+  scene.drag = 0.5;  // 10 /s: at rest within the implicit trials' 4000 steps of h w_max = 30
+  const mysim::Model model = mysim::buildModel(scene);
+  const EngineRegistry registry;
+  RunConfig config = runConfig(scene);
+  config.limits.max_strain = 1e6;
+  for (const char* engine : {"mysim:backward-euler", "bullet-implicit", "mysim:symplectic-euler"}) {
+    auto search = [&](double rest_of_seed) {
+      SceneStabilitySettings settings;
+      settings.rest_of_seed = rest_of_seed;
+      const long before = workDone().steps;
+      const StabilityLimit l = sceneStability(registry, model, config, engine, settings);
+      return std::pair{l, workDone().steps - before};
+    };
+    const auto [whole, whole_steps] = search(0.0);
+    const auto [rested, rested_steps] = search(1e-6);
+    EXPECT_EQ(rested.status, whole.status) << engine;
+    EXPECT_EQ(rested.h_stable, whole.h_stable) << engine;
+    EXPECT_EQ(rested.h_unstable, whole.h_unstable) << engine;
+    if (whole.status == "stable-at-max") {
+      EXPECT_LT(rested_steps, whole_steps / 4) << engine << ": at rest long before 4000 steps";
+    } else {
+      EXPECT_EQ(whole.status, "bracketed") << engine;
+    }
   }
 }
 

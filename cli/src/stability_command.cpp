@@ -21,6 +21,7 @@ struct StabilityOptions {
   long steps = 4000;
   bool whole_run = false;
   double seed_amplitude = 1e-4;  // SceneStabilitySettings::seed_amplitude
+  double rest_of_seed = 1e-6;     // SceneStabilitySettings::rest_of_seed
   double max_h_omega = 30.0;     // SceneStabilitySettings::h_max_omega
   std::string name;              // the map's table, stability_NAME.csv (default: the scene's)
   std::vector<std::string> engines_files;
@@ -77,6 +78,7 @@ int sceneStabilityMaps(const StabilityOptions& o, const EngineRegistry& registry
   }
   settings.search.steps = o.steps;
   settings.search.seed_amplitude = o.seed_amplitude;
+  settings.search.rest_of_seed = o.rest_of_seed;
   settings.search.h_max_omega = o.max_h_omega;
   if (o.whole_run) settings.search.duration = scene.duration;
   const std::vector<StabilityMapCell> cells = stabilityMaps(registry, scene, settings);
@@ -167,6 +169,13 @@ void addSceneMapOptions(CLI::App* cmd, StabilityOptions& o) {
                   "fraction of the shortest rest length (seeded, the same in every engine), so "
                   "a limit does not depend on an engine's round-off; 0 turns it off")
       ->check(CLI::Range(0.0, 1e-2))
+      ->capture_default_str();
+  cmd->add_option("--rest-of-seed", o.rest_of_seed,
+                  "Scene maps: a trial ends early, stable, once no coordinate has moved more "
+                  "than this fraction of the seed's displacement over two hundredths of the "
+                  "trial in a row (a damped scene at rest only repeats itself); 0, or no seed, "
+                  "runs every trial whole")
+      ->check(CLI::Range(0.0, 1e-3))
       ->capture_default_str();
   cmd->add_option("--max-h-omega", o.max_h_omega,
                   "Scene maps: the largest step tried, as h w_max (raise it to find where the "

@@ -137,11 +137,16 @@ mysim::Model stressedModel(const mysim::Model& model, double stiffness_scale, do
   return m;
 }
 
+double shortestRestLength(const mysim::Model& model) {
+  double shortest = std::numeric_limits<double>::infinity();
+  for (const mysim::Spring& sp : model.springs) shortest = std::min(shortest, sp.rest_length);
+  return model.springs.empty() ? 0.0 : shortest;
+}
+
 mysim::Model seededStart(const mysim::Model& model, double amplitude) {
   mysim::Model seeded = model;
   if (amplitude <= 0.0 || model.springs.empty()) return seeded;
-  double shortest = std::numeric_limits<double>::infinity();
-  for (const mysim::Spring& sp : model.springs) shortest = std::min(shortest, sp.rest_length);
+  const double shortest = shortestRestLength(model);
   for (int p = 0; p < model.particleCount(); ++p) {
     if (model.pinned[p]) continue;
     for (int c = 0; c < 3; ++c) {
@@ -162,6 +167,7 @@ StabilityLimit sceneStability(const EngineRegistry& registry, const mysim::Model
                               const SceneStabilitySettings& settings) {
   const mysim::Model model = seededStart(unseeded, settings.seed_amplitude);
   const double w_max = highestFrequency(model);
+  const double shortest = shortestRestLength(model);
   // Without a spring mode to scale by, search the scene's own range.
   const double h_min = w_max > 0 ? settings.h_min_omega / w_max : config.run.dt / 100;
   const double h_max = w_max > 0 ? settings.h_max_omega / w_max : config.run.dt * 100;
@@ -174,6 +180,7 @@ StabilityLimit sceneStability(const EngineRegistry& registry, const mysim::Model
     run.run.duration = h * static_cast<double>(steps);
     run.run.sample_interval = h * static_cast<double>(std::max(1L, steps / 100));
     run.run.stop_at_solver_failure = true;
+    run.run.rest_displacement = settings.rest_of_seed * settings.seed_amplitude * shortest;
     auto record = registry.run(engine, model, run);
     if (!record) {
       why = record.error().message;

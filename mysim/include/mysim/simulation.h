@@ -29,6 +29,8 @@ struct RunRecord {
   std::vector<ParticleRows> frames;   // (F) sampled states, finite only
   std::vector<EnergyTerms> energies;  // (F) where the system has energy
   std::optional<BlowUp> blowup;
+  // When the run ended early at rest (RunSettings::rest_displacement): the time it stopped, s.
+  std::optional<double> rested_at;
   std::vector<std::string> notes;  // how the engine differs from the scene as written, if at all
   // For an engine that computes in single precision: half an ulp of float at the run's largest
   // coordinate, m. No such engine can be closer than this to anything; 0 for double engines.
@@ -55,6 +57,11 @@ struct RunSettings {
   // so a map's limit for an iterative family is the largest step it still solves, not one it
   // survives unsolved (issue 36). Off in every other run: there it is reported, not fatal.
   bool stop_at_solver_failure = false;
+  // The stability study's: > 0 ends the run once it has come to rest, no coordinate having moved
+  // more than this (m) over each of two sampling intervals in a row. A state at rest is a fixed
+  // point of the step, and the steps left would only repeat it (the study's reason: its probes
+  // run 4000 steps, and a damped scene at a large step is at rest after a few hundred). 0: off.
+  double rest_displacement = 0.0;
 };
 
 // Frames are taken every this many steps.

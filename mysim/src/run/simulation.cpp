@@ -79,6 +79,16 @@ std::optional<BlowUp> solverStop(const StepCounts& counts, const RunSettings& se
   return std::nullopt;
 }
 
+// Whether the run has come to rest (RunSettings::rest_displacement): no coordinate moved more
+// than `limit` between the last two sampled frames, for the second interval in a row.
+bool cameToRest(const RunRecord& record, double limit, int& intervals_at_rest) {
+  const std::size_t f = record.frames.size();
+  if (limit <= 0.0 || f < 2 || record.frames[f - 1].rows() == 0) return false;
+  const auto moved = record.frames[f - 1].leftCols<3>() - record.frames[f - 2].leftCols<3>();
+  intervals_at_rest = moved.cwiseAbs().maxCoeff() <= limit ? intervals_at_rest + 1 : 0;
+  return intervals_at_rest == 2;
+}
+
 }  // namespace
 
 RunRecord simulate(OdeSystem& system, Stepper& stepper, State state, const RunSettings& settings) {
@@ -101,6 +111,7 @@ RunRecord simulate(OdeSystem& system, Stepper& stepper, State state, const RunSe
 
   ThreadBudget budget(settings.threads, settings.follow_load);
   Clock::duration stepping{};
+  int intervals_at_rest = 0;
   for (long step = 1; step <= steps; ++step) {
     budget.update();
     if (driven) before = state;
@@ -128,6 +139,10 @@ RunRecord simulate(OdeSystem& system, Stepper& stepper, State state, const RunSe
         lowest = std::min(lowest, e->total());
       }
       recordFrame(system, state, e, record);
+      if (cameToRest(record, settings.rest_displacement, intervals_at_rest)) {
+        record.rested_at = state.t;
+        break;
+      }
     }
   }
   record.wall_seconds = std::chrono::duration<double>(stepping).count();

@@ -135,7 +135,10 @@ const std::vector<IntegratorParameter> kAdaptiveParameters = {
 // integrators/halving_steps.h): on a stiff membrane bending far (the shipped cantilever at 32
 // cells, 1/60 s, h^2 k / m ~ 1e5) VBD's passes blew up unsolved and local/global stopped 8 % off;
 // halved, every family solves it within 0.1 % of the heavy elastica. With max_halvings 0 the
-// plain limits stand.
+// plain limits stand. What halving cannot repair, from theory: implicit Euler loses energy only
+// where the energy it descends is convex, and a spring folded through zero length is not (a link
+// of the chain pile landing at 1/60 s moves twice its rest length a step): there backward Euler
+// and VBD blow up at 1/60 s with every step solved, and run whole at 1/240 s (docs/contact.md).
 const std::vector<IntegratorInfo>& integratorCatalog() {
   using S = const IntegratorSettings&;
   using F = IntegratorFamily;

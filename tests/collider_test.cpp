@@ -49,6 +49,28 @@ TEST(BoxCollider, ContactLeavesThroughTheNearestFaceOrAlongTheLineFromTheNearest
   EXPECT_FALSE(contactPoint(box, Vec3(1.2, 0, 0)));
 }
 
+// A thin wall (2 cm, cloth_over_thin_wall's): a step that carries a node from above the top
+// deeper than the half thickness leaves it nearer a side than the top; it goes back out the top,
+// the way it came in. One that came in through a side goes back out that side; one that was
+// inside already leaves through the nearest face.
+TEST(BoxCollider, ANodeCarriedDeepIntoAThinWallLeavesTheWayItCameIn) {
+  const Box wall{Vec3(0, 0.5, 0), Vec3(0.01, 0.1, 0.6), 1e-3};
+  const Vec3 deep(0.004, 0.585, 0.2);  // 1.5 cm below the top, 0.6 cm from the +x side
+  const auto from_above = contactPoint(wall, deep, [](const Vec3&) { return false; },
+                                       Vec3(0.003, 0.61, 0.2));
+  ASSERT_TRUE(from_above);
+  EXPECT_EQ(from_above->normal, Vec3::UnitY());
+  EXPECT_NEAR(from_above->point.y(), 0.601, 1e-15);
+  EXPECT_EQ(from_above->point.x(), deep.x());
+  const auto from_side = contactPoint(wall, deep, [](const Vec3&) { return false; },
+                                      Vec3(-0.02, 0.59, 0.2));
+  ASSERT_TRUE(from_side);
+  EXPECT_EQ(from_side->normal, -Vec3::UnitX());  // entered the -x side, crossed nearly through
+  const auto already_inside = contactPoint(wall, deep);
+  ASSERT_TRUE(already_inside);
+  EXPECT_EQ(already_inside->normal, Vec3::UnitX());  // the nearest face
+}
+
 // A box standing on the ground (its bottom face on the plane): a node just inside near the
 // bottom leaves through the nearest face that does not lead into the ground, here its side,
 // and ends outside both. The point is one a cloth run met: its clamped nearest point differs from

@@ -27,9 +27,14 @@ struct Box {
 // face).
 double signedDistance(const Box& box, const Vec3& x);
 std::optional<SurfacePoint> contactPoint(const Box& box, const Vec3& x);
-// The same, a particle inside leaving through the nearest face whose exit is not `blocked` (the
-// nearest of all if every one is).
-std::optional<SurfacePoint> contactPoint(const Box& box, const Vec3& x, const Blocked& blocked);
+// The same, a particle inside leaving through the face it came in by, when `from` (where it was
+// as the step began) is outside, else through the nearest face; either way only through a face
+// whose exit is not `blocked` (the nearest if every one is). Why the way in: a step may carry a
+// particle deeper into a thin box than its half thickness, and the nearest face is then the far
+// one (a cloth at 1/60 s fell off the top of the 2 cm wall of cloth_over_thin_wall through its
+// sides).
+std::optional<SurfacePoint> contactPoint(const Box& box, const Vec3& x, const Blocked& blocked,
+                                         const Vec3& from);
 
 // Its drawing: its six faces, each half extent less the inset.
 SurfaceMesh surfaceMesh(const Box& box, const SurfaceDrawing& drawing);

@@ -36,10 +36,11 @@ inline std::optional<SurfacePoint> contactPoint(const Collider& c, const Vec3& x
 inline SurfaceMesh surfaceMesh(const Collider& c, const SurfaceDrawing& drawing) {
   return std::visit([&](const auto& shape) { return surfaceMesh(shape, drawing); }, c);
 }
-// With a test for exits that lead into another collider (only a box has a choice of exits).
+// With a test for exits that lead into another collider and where the particle was as the step
+// began (only a box has a choice of exits).
 inline std::optional<SurfacePoint> contactPoint(const Collider& c, const Vec3& x,
-                                                const Blocked& blocked) {
-  if (const Box* box = std::get_if<Box>(&c)) return contactPoint(*box, x, blocked);
+                                                const Blocked& blocked, const Vec3& from) {
+  if (const Box* box = std::get_if<Box>(&c)) return contactPoint(*box, x, blocked, from);
   return contactPoint(c, x);
 }
 

@@ -35,7 +35,8 @@ struct FirstContact {
   std::size_t collider = 0;
 };
 std::optional<FirstContact> firstContact(const std::vector<Collider>& colliders,
-                                         const std::vector<Blocked>& inside_another, const Vec3& x);
+                                         const std::vector<Blocked>& inside_another, const Vec3& x,
+                                         const Vec3& from);
 
 // After a step: every free particle touching a collider goes onto its surface (applyContact),
 // colliders in the model's order, each avoiding exits into the others (a box's bottom face on

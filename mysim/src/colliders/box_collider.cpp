@@ -32,10 +32,34 @@ double signedDistance(const Box& box, const Vec3& x) {
 }
 
 std::optional<SurfacePoint> contactPoint(const Box& box, const Vec3& x) {
-  return contactPoint(box, x, [](const Vec3&) { return false; });
+  return contactPoint(box, x, [](const Vec3&) { return false; }, x);
 }
 
-std::optional<SurfacePoint> contactPoint(const Box& box, const Vec3& x, const Blocked& blocked) {
+namespace {
+
+// The face a particle now at `local` (inside) came in by from `from_local` (outside), as
+// (axis, side): the slab it entered last along the straight path. -1 when it was inside already.
+std::pair<int, double> entryFace(const Box& box, const Vec3& local, const Vec3& from_local) {
+  int entry_axis = -1;
+  double entry_side = 0.0, latest = -1.0;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double side = from_local[axis] < 0.0 ? -1.0 : 1.0;
+    const double outside = side * from_local[axis] - box.half_extents[axis];
+    if (outside <= 0.0) continue;
+    const double entered = outside / (side * (from_local[axis] - local[axis]));  // in (0, 1]
+    if (entered > latest) {
+      latest = entered;
+      entry_axis = axis;
+      entry_side = side;
+    }
+  }
+  return {entry_axis, entry_side};
+}
+
+}  // namespace
+
+std::optional<SurfacePoint> contactPoint(const Box& box, const Vec3& x, const Blocked& blocked,
+                                         const Vec3& from) {
   const Vec3 local = x - box.center;
   const Vec3 q = local.cwiseAbs() - box.half_extents;  // > 0: outside along that axis
   if (q.maxCoeff() > 0.0) {
@@ -47,12 +71,14 @@ std::optional<SurfacePoint> contactPoint(const Box& box, const Vec3& x, const Bl
     if (d >= box.margin) return std::nullopt;
     return SurfacePoint{nearest + box.margin * (out / d), out / d};
   }
-  // Inside or on a face: out through a face to margin beyond it, the nearest face first (on each
-  // axis the side the particle is on first; the earlier axis on a tie).
+  // Inside or on a face: out through a face to margin beyond it, the face it came in by first,
+  // then the nearest (on each axis the side the particle is on first; the earlier axis on a tie).
   struct Exit {
+    bool way_in;
     double distance;
     SurfacePoint surface;
   };
+  const auto [entry_axis, entry_side] = entryFace(box, local, from - box.center);
   std::vector<Exit> exits;
   for (int axis = 0; axis < 3; ++axis) {
     const double near_side = local[axis] < 0.0 ? -1.0 : 1.0;
@@ -61,11 +87,13 @@ std::optional<SurfacePoint> contactPoint(const Box& box, const Vec3& x, const Bl
       n[axis] = side;
       Vec3 p = x;
       p[axis] = box.center[axis] + side * (box.half_extents[axis] + box.margin);
-      exits.push_back({box.half_extents[axis] - side * local[axis], {p, n}});
+      const bool way_in = axis == entry_axis && side == entry_side;
+      exits.push_back({way_in, box.half_extents[axis] - side * local[axis], {p, n}});
     }
   }
-  std::stable_sort(exits.begin(), exits.end(),
-                   [](const Exit& a, const Exit& b) { return a.distance < b.distance; });
+  std::stable_sort(exits.begin(), exits.end(), [](const Exit& a, const Exit& b) {
+    return a.way_in != b.way_in ? a.way_in : a.distance < b.distance;
+  });
   for (const Exit& e : exits) {
     if (!blocked(e.surface.point)) return e.surface;
   }

@@ -53,9 +53,12 @@ std::vector<Blocked> insideAnotherCollider(const std::vector<Collider>& collider
 }
 
 std::optional<FirstContact> firstContact(const std::vector<Collider>& colliders,
-                                         const std::vector<Blocked>& inside_another, const Vec3& x) {
+                                         const std::vector<Blocked>& inside_another, const Vec3& x,
+                                         const Vec3& from) {
   for (std::size_t k = 0; k < colliders.size(); ++k) {
-    if (const auto s = contactPoint(colliders[k], x, inside_another[k])) return FirstContact{*s, k};
+    if (const auto s = contactPoint(colliders[k], x, inside_another[k], from)) {
+      return FirstContact{*s, k};
+    }
   }
   return std::nullopt;
 }
@@ -67,7 +70,8 @@ int resolveContacts(const std::vector<Collider>& colliders, const std::vector<ch
   for (int p = 0; p < static_cast<int>(pinned.size()); ++p) {
     if (pinned[p]) continue;
     for (std::size_t k = 0; k < colliders.size(); ++k) {
-      if (const auto s = contactPoint(colliders[k], x.segment<3>(3 * p), inside_another[k])) {
+      const Vec3 from = start.segment<3>(3 * p);
+      if (const auto s = contactPoint(colliders[k], x.segment<3>(3 * p), inside_another[k], from)) {
         applyContact(*s, colliderFriction(colliders[k]), start.segment<3>(3 * p),
                      x.segment<3>(3 * p), v.segment<3>(3 * p));
         ++contacts;

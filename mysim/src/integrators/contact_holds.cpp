@@ -26,12 +26,12 @@ int ContactHolds::holdInsideColliders(const ParticleSystem& ps, const Vector& x0
   for (int p = 0; p < ps.particleCount(); ++p) {
     if (model.pinned[p] || index_[p] >= 0) continue;
     const Vec3 at = x.segment<3>(3 * p);
-    const auto contact = firstContact(model.colliders, inside_another, at);
+    const Vec3 start = x0.segment<3>(3 * p);
+    const auto contact = firstContact(model.colliders, inside_another, at, start);
     if (!contact) continue;
     const SurfacePoint& s = contact->surface;
     const Friction& friction = colliderFriction(model.colliders[contact->collider]);
     // With friction it is tried stuck: on the plane where it was when the step began.
-    const Vec3 start = x0.segment<3>(3 * p);
     const Vec3 point = friction.any() ? Vec3(start - (start - s.point).dot(s.normal) * s.normal) : s.point;
     index_[p] = static_cast<int>(holds_.size());
     holds_.push_back({p, point, s.normal, friction.any(), friction});

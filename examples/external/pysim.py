@@ -47,11 +47,12 @@ def signed_distance(collider, x):
     return np.sqrt(dot3(outside, outside)) + np.minimum(q.max(axis=1), 0.0)
 
 
-def contact(collider, x, others):
+def contact(collider, x, others, start):
     """Which particles touch a collider (closer than its margin, or inside), the point of its
     surface grown by the margin each must go to, and the outward normal there
     (docs/external-engines.md, "After every step"). `others`: the model's other colliders, whose
-    inside a box's exit must avoid."""
+    inside a box's exit must avoid; `start`: where the particles were as the step began (a box's
+    exit is the face a particle came in by)."""
     margin = collider["margin"]
     if collider["type"] == "sphere":
         centre = np.array(collider["center"], dtype=float)
@@ -66,11 +67,26 @@ def contact(collider, x, others):
         distance = signed_distance(collider, x)
         return distance < margin, x + (margin - distance)[:, None] * normal, np.tile(normal, (len(x), 1))
     if collider["type"] == "box":
-        return box_contact(collider, x, others)
+        return box_contact(collider, x, others, start)
     sys.exit(f"pysim: collider type {collider['type']!r} not handled")
 
 
-def box_contact(box, x, others):
+def entry_face(half, local, from_local):
+    """The face a particle now at `local` (inside) came in by from `from_local`, as (axis, side):
+    the slab its straight path entered last; (-1, 0) if it was inside already."""
+    entry, entry_side, latest = -1, 0.0, -1.0
+    for axis in range(3):
+        side = -1.0 if from_local[axis] < 0 else 1.0
+        outside = side * from_local[axis] - half[axis]
+        if outside <= 0:
+            continue
+        entered = outside / (side * (from_local[axis] - local[axis]))
+        if entered > latest:
+            entry, entry_side, latest = axis, side, entered
+    return entry, entry_side
+
+
+def box_contact(box, x, others, start):
     centre = np.array(box["center"], dtype=float)
     half = np.array(box["half_extents"], dtype=float)
     margin = box["margin"]
@@ -84,10 +100,11 @@ def box_contact(box, x, others):
     touching = inside | (d < margin)
     normal = out / np.where(d > 0, d, 1.0)[:, None]
     point = nearest + margin * normal
-    # Inside: out through a face to margin beyond it, the nearest face first (on each axis the
-    # side the particle is on first, the earlier axis on a tie), skipping exits inside another
-    # collider.
+    # Inside: out through a face to margin beyond it, the face it came in by first, then the
+    # nearest (on each axis the side the particle is on first, the earlier axis on a tie),
+    # skipping exits inside another collider.
     for p in np.nonzero(inside)[0]:
+        entry = entry_face(half, local[p], start[p] - centre)
         exits = []
         for axis in range(3):
             near = -1.0 if local[p, axis] < 0 else 1.0
@@ -96,11 +113,12 @@ def box_contact(box, x, others):
                 e[axis] = centre[axis] + side * (half[axis] + margin)
                 n = np.zeros(3)
                 n[axis] = side
-                exits.append((half[axis] - side * local[p, axis], e, n))
-        exits.sort(key=lambda item: item[0])  # stable: ties keep the order above
+                way_in = (axis, side) == entry
+                exits.append((not way_in, half[axis] - side * local[p, axis], e, n))
+        exits.sort(key=lambda item: item[:2])  # stable: ties keep the order above
         chosen = next((ex for ex in exits
-                       if not any(signed_distance(o, ex[1][None, :])[0] < 0 for o in others)), exits[0])
-        point[p], normal[p] = chosen[1], chosen[2]
+                       if not any(signed_distance(o, ex[2][None, :])[0] < 0 for o in others)), exits[0])
+        point[p], normal[p] = chosen[2], chosen[3]
     return touching, point, normal
 
 
@@ -218,7 +236,7 @@ class Model:
         x[self.pinned], v[self.pinned] = self.pin_path(t)
         for index, collider in enumerate(self.colliders):
             others = self.colliders[:index] + self.colliders[index + 1:]
-            touching, point, normal = contact(collider, x, others)
+            touching, point, normal = contact(collider, x, others, self.step_start)
             touching &= self.free
             if np.any(touching):
                 rows = np.nonzero(touching)[0]

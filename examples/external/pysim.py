@@ -11,14 +11,12 @@ springcheck reads back:
     OUT_DIR/summary.json    its own stepping time, evaluations, and a blow-up if one happened
 
 It steps by XPBD when the model's integrator is `xpbd` (its substeps and iterations), and by
-symplectic Euler -- v += h a(t, x, v); x += h v -- for any other. Both follow the protocol page's
-rules ("Matching mysim's integrators to the last bit") operation by operation: forces of gravity,
-drag, wind, damped springs and hinges summed in mysim's order; pinned particles put on their
-prescribed path after the step; particles touching a collider (sphere, plane, box) moved onto
-its surface grown by its margin and stripped of their inward velocity, with the collider's
-Coulomb friction on that projection. So it agrees with
-`mysim:symplectic-euler` and `mysim:xpbd` to the bit (tests/protocol_rules_test.cpp). Copy it
-as the start of your own engine.
+symplectic Euler -- v += h a(t, x, v); x += h v -- for any other, both as the protocol page's
+rules say ("Matching mysim's integrators to the last bit"): forces of gravity, drag, wind, damped
+springs and hinges summed in mysim's order; pins on their path after the step; particles touching
+a collider (sphere, plane, box) moved onto its surface grown by its margin, stripped of their
+inward velocity, with its Coulomb friction. So it agrees with `mysim:symplectic-euler` and
+`mysim:xpbd` to the bit (tests/protocol_rules_test.cpp). Copy it as the start of your own engine.
 """
 import json
 import math
@@ -73,22 +71,16 @@ def contact(collider, x, others, start):
 
 def entry_face(half, local, from_local):
     """The face a particle now at `local` (inside) came in by from `from_local`, as (axis, side):
-    the slab its straight path entered last; (-1, 0) if it was inside already."""
-    entry, entry_side, latest = -1, 0.0, -1.0
-    for axis in range(3):
-        side = -1.0 if from_local[axis] < 0 else 1.0
-        outside = side * from_local[axis] - half[axis]
-        if outside <= 0:
-            continue
-        entered = outside / (side * (from_local[axis] - local[axis]))
-        if entered > latest:
-            entry, entry_side, latest = axis, side, entered
-    return entry, entry_side
+    the slab its straight path entered last; None if it was inside already."""
+    side = np.where(from_local < 0, -1.0, 1.0)
+    outside = side * from_local - half
+    entered = np.where(outside > 0, outside / np.where(outside > 0, side * (from_local - local), 1.0), -1.0)
+    axis = int(np.argmax(entered))  # the first axis on a tie, as mysim's strict comparison
+    return (axis, side[axis]) if entered[axis] > 0 else None
 
 
 def box_contact(box, x, others, start):
-    centre = np.array(box["center"], dtype=float)
-    half = np.array(box["half_extents"], dtype=float)
+    centre, half = (np.array(box[key], dtype=float) for key in ("center", "half_extents"))
     margin = box["margin"]
     local = x - centre
     q = np.abs(local) - half
@@ -100,9 +92,8 @@ def box_contact(box, x, others, start):
     touching = inside | (d < margin)
     normal = out / np.where(d > 0, d, 1.0)[:, None]
     point = nearest + margin * normal
-    # Inside: out through a face to margin beyond it, the face it came in by first, then the
-    # nearest (on each axis the side the particle is on first, the earlier axis on a tie),
-    # skipping exits inside another collider.
+    # Inside: out through a face to margin beyond it, the way in first, then the nearest (on each
+    # axis its own side first, the earlier axis on a tie), skipping exits into another collider.
     for p in np.nonzero(inside)[0]:
         entry = entry_face(half, local[p], start[p] - centre)
         exits = []
@@ -111,10 +102,8 @@ def box_contact(box, x, others, start):
             for side in (near, -near):
                 e = x[p].copy()
                 e[axis] = centre[axis] + side * (half[axis] + margin)
-                n = np.zeros(3)
-                n[axis] = side
                 way_in = (axis, side) == entry
-                exits.append((not way_in, half[axis] - side * local[p, axis], e, n))
+                exits.append((not way_in, half[axis] - side * local[p, axis], e, side * np.eye(3)[axis]))
         exits.sort(key=lambda item: item[:2])  # stable: ties keep the order above
         chosen = next((ex for ex in exits
                        if not any(signed_distance(o, ex[2][None, :])[0] < 0 for o in others)), exits[0])

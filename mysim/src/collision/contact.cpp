@@ -69,11 +69,11 @@ int resolveContacts(const std::vector<Collider>& colliders, const std::vector<ch
   int contacts = 0;
   for (int p = 0; p < static_cast<int>(pinned.size()); ++p) {
     if (pinned[p]) continue;
+    const Vec3 from = start.segment<3>(3 * p);  // where it was as the step began
     for (std::size_t k = 0; k < colliders.size(); ++k) {
-      const Vec3 from = start.segment<3>(3 * p);
       if (const auto s = contactPoint(colliders[k], x.segment<3>(3 * p), inside_another[k], from)) {
-        applyContact(*s, colliderFriction(colliders[k]), start.segment<3>(3 * p),
-                     x.segment<3>(3 * p), v.segment<3>(3 * p));
+        applyContact(*s, colliderFriction(colliders[k]), from, x.segment<3>(3 * p),
+                     v.segment<3>(3 * p));
         ++contacts;
       }
     }

@@ -25,4 +25,5 @@ def page(missing):
                 f"are left out: {what} (the command that makes each below)",
                 "These tables were not in the results folder, so their pages are left out. Run each "
                 "command (from any folder; paths as given), then `springcheck report` again. The main job, "
-                "scripts/run-suite.sh, makes all of them.", draw)
+                "scripts/run-suite.sh, makes every one of them but the benchmarks (scripts/run-bench.sh: "
+                "minutes of timed runs, kept out of the main job).", draw)

@@ -298,10 +298,11 @@ void addRefinement(json& m, const fs::path& results, const std::string& d,
   const std::string scenes = d + "/scenes/material/";
   missing(refine.string(),
           "springcheck refine " + scenes + "cantilever_strip.json " + scenes +
-              "cantilever_strip_flex.json " + scenes + "cusick_drape.json --resolutions 4,8,16 "
-              "--out " + results.string() + "/refine",
+              "cantilever_strip_flex.json " + scenes + "cusick_drape.json " + scenes +
+              "cable_catenary.json --resolutions 4,8,16 --engines mysim,bullet-implicit --out " +
+              results.string() + "/refine",
           "convergence as the mesh is refined: the cantilever against the elastica, flex "
-          "springs, the drape test");
+          "springs, the drape test, the cable against the catenary");
 }
 
 // The benchmarks (not part of the main job: they take minutes) and the main job's stage times

@@ -34,13 +34,18 @@ struct StepCounts {
 // Backward Euler's CG preconditioner (docs/performance.md measures each): symmetric
 // successive over-relaxation with the 3x3 blocks (fewest iterations, but its sweeps run on one
 // core), the inverses of the 3x3 diagonal blocks, or the plain diagonal. Auto, the default, takes
+// the whole factor (Cholesky, below) where hinges bend a system of up to 12500 particles, and
 // SSOR where the springs dominate the masses ((h c + h^2 k)/m > 1 for the most damped and the
 // stiffest springs on a free particle: large steps, where CG needs tens of iterations) and block
 // Jacobi below, where a few parallel iterations cost less than SSOR's serial sweeps (measured
 // crossing near h^2 k/m = 1 on 32 x 32 and 64 x 64 cloths, 1 and 2 threads).
-enum class CgPreconditioner { Auto, Jacobi, BlockJacobi, Ssor };
+// Cholesky: the step's whole matrix factored (a sparse LDL^T), so CG stops after one iteration,
+// and the factor kept while it brings later steps' CG to the tolerance in a few: a direct solve,
+// for small stiff systems such as a hinge strip, where the others need hundreds of iterations
+// (docs/performance.md "A direct solve for backward Euler").
+enum class CgPreconditioner { Auto, Jacobi, BlockJacobi, Ssor, Cholesky };
 const char* preconditionerName(CgPreconditioner preconditioner);
-// By name ("auto", "jacobi", "block-jacobi", "ssor"), or an error listing them.
+// By name ("auto", "jacobi", "block-jacobi", "ssor", "cholesky"), or an error listing them.
 std::expected<CgPreconditioner, std::string> preconditionerByName(std::string_view name);
 
 struct IntegratorSettings {

@@ -9,6 +9,7 @@
 #include "mysim/particle_system.h"
 #include "solvers/spring_block_matrix.h"
 #include "solvers/ssor_conjugate_gradient.h"
+#include "solvers/step_factor.h"
 #include "core/parallel_threshold.h"
 
 namespace mysim {
@@ -67,6 +68,18 @@ class BackwardEuler final : public Integrator {
   // The step's linear system A dv = b, solved for dv_free_ (warm-started from the last step's).
   CgResult solve(const ParticleSystem& ps, double h) {
     const SpringBlockMatrix& A = *matrix_;
+    // The factor, where chosen and positive definite (else block Jacobi, below); refactored only
+    // when the last solve with it took more than kStaleIterations.
+    exact_ = preconditionerFor(h) == CgPreconditioner::Cholesky &&
+             (factored_ && !refactor_ ? true : (factored_ = factorStep(ps, h)));
+    if (exact_) {
+      const CgResult cg = conjugateGradient(
+          [this, &ps, h](const Vector& in, Vector& out) { multiply(ps, h, in, out); },
+          [this](const Vector& r, Vector& z) { factor_.solve(r, z); }, rhs_, dv_free_, tolerance_,
+          max_iterations_);
+      refactor_ = cg.iterations > kStaleIterations;
+      return cg;
+    }
     if (!ps.model().hinges.empty()) {
       // The hinges' constant blocks beside the springs' (addHinges); SSOR sweeps the spring
       // matrix's own storage, so hinge scenes take block Jacobi (the scene reader refuses ssor).
@@ -170,7 +183,10 @@ class BackwardEuler final : public Integrator {
         filtered_norm > 0.0 ? tolerance_ * std::max(1.0, rhs_.norm() / filtered_norm) : tolerance_;
     const CgResult cg = conjugateGradient(
         [&](const Vector& in, Vector& out) { multiply(ps, h, in, out), filter(out); },
-        [&](const Vector& r, Vector& z) { A.applyDiagonalInverse(r, z), filter(z); },
+        [&](const Vector& r, Vector& z) {
+          exact_ ? factor_.solve(r, z) : A.applyDiagonalInverse(r, z);
+          filter(z);
+        },
         filtered_rhs_, y, tolerance, max_iterations_);
     dv_free_ = y + constrained_;
     return cg;
@@ -181,10 +197,14 @@ class BackwardEuler final : public Integrator {
   // is already worse at 32 x 32 (docs/performance.md).
   static constexpr double kSsorOmega = 1.5;
 
-  // Auto: SSOR where the springs' blocks outweigh the masses, (h c + h^2 k)/m > 1 for the
-  // stiffest and most damped springs on a free particle (integrator.h).
+  // Auto: the whole factor where hinges bend a system of at most kFactorParticles (their
+  // stiffness grows as the fourth power of the cells, and block Jacobi's CG took 500 iterations a
+  // step on the 32-cell cantilever, 1000 unsolved at 64); else SSOR where the springs' blocks
+  // outweigh the masses, (h c + h^2 k)/m > 1 for the stiffest and most damped springs on a free
+  // particle (integrator.h).
   CgPreconditioner preconditionerFor(double h) const {
     if (preconditioner_ != CgPreconditioner::Auto) return preconditioner_;
+    if (hinged_ && std::ssize(free_particles_) <= kFactorParticles) return CgPreconditioner::Cholesky;
     return h * most_damping_over_m_ + h * h * stiffest_k_over_m_ > 1.0
                ? CgPreconditioner::Ssor
                : CgPreconditioner::BlockJacobi;
@@ -201,6 +221,7 @@ class BackwardEuler final : public Integrator {
       }
     }
     const Model& model = ps.model();
+    hinged_ = !model.hinges.empty();
     stiffest_k_over_m_ = most_damping_over_m_ = 0.0;
     for (const Spring& sp : model.springs) {
       for (int end : {sp.i, sp.j}) {
@@ -301,6 +322,23 @@ class BackwardEuler final : public Integrator {
     }
   }
 
+  // The step's matrix, springs' and hinges' blocks, factored whole (StepFactor).
+  bool factorStep(const ParticleSystem& ps, double h) {
+    triplets_.clear();
+    matrix_->appendLowerTriangle(triplets_);
+    for (const Hinge& hinge : ps.model().hinges) {  // h^2 k w_p w_q I below the diagonal
+      for (int a = 0; a < 4; ++a) {
+        for (int b = 0; b < 4; ++b) {
+          const int i = free_index_[hinge.particle[a]], j = free_index_[hinge.particle[b]];
+          if (i < 0 || j < 0 || j >= i) continue;
+          const double value = h * h * hinge.stiffness * hinge.weight[a] * hinge.weight[b];
+          for (int c = 0; c < 3; ++c) triplets_.emplace_back(3 * i + c, 3 * j + c, value);
+        }
+      }
+    }
+    return factor_.factor(3 * matrix_->rows(), triplets_);
+  }
+
   // out += the hinges' off-diagonal blocks times `in` (free unknowns): per hinge
   // h^2 k w_p sum_{q free, q != p} w_q in_q on each free particle p.
   void multiplyHinges(const ParticleSystem& ps, double h, const Vector& in, Vector& out) const {
@@ -322,6 +360,20 @@ class BackwardEuler final : public Integrator {
   std::vector<int> free_index_;      // (N) row block of each free particle, -1 if pinned
   std::vector<int> free_particles_;  // (F) particle of each row block
   std::optional<SpringBlockMatrix> matrix_;
+  StepFactor factor_;  // the "cholesky" preconditioner's
+  std::vector<StepFactor::Triplet> triplets_;
+  bool exact_ = false;     // this step's solve used factor_
+  bool factored_ = false;  // factor_ holds a positive definite factor of an earlier step's matrix
+  bool refactor_ = false;  // the last solve with it took more than kStaleIterations
+  // The matrix changes little from one step to the next (springs turning a few degrees), so an
+  // earlier step's factor still brings CG to its tolerance in a few iterations, each far cheaper
+  // than factoring again (docs/performance.md "A direct solve for backward Euler").
+  static constexpr int kStaleIterations = 4;
+  // Measured faster than block Jacobi on every hinge system up to the 64-ring Cusick disc's 12481
+  // particles (26.6 s to 22.0 s for its first 0.25 s, 2.3x the memory); larger ones are not
+  // measured, so they keep CG.
+  static constexpr int kFactorParticles = 12500;
+  bool hinged_ = false;  // the model bends by hinges
   std::vector<Vec3> stiffness_term_;  // (S) h^2 J (v_j - v_i) of each spring, this step
   Vector f_, dv_known_, rhs_, dv_free_;
   Vector v0_;  // (3N) the step's start velocities

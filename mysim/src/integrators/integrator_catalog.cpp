@@ -54,7 +54,7 @@ constexpr double kUnconditional = std::numeric_limits<double>::infinity();
 const std::vector<IntegratorParameter> kBackwardEulerParameters = {
     {"cg_tolerance", "1e-8", "CG relative residual of the linear solve"},
     {"cg_max_iterations", "1000", "CG iteration limit per step"},
-    {"cg_preconditioner", "auto", "auto, jacobi, block-jacobi or ssor"}};
+    {"cg_preconditioner", "auto", "auto, jacobi, block-jacobi, ssor or cholesky (a direct solve)"}};
 // The iterative families' stopping rule (pass_control.h): after `iterations` passes, on until
 // the forces left unbalanced are `tolerance` of the forces acting, at most 1000 passes. Measured
 // at 1/60 s (docs/performance.md "Passes to a tolerance"): with a fixed ten passes XPBD and VBD
@@ -247,17 +247,20 @@ const char* preconditionerName(CgPreconditioner preconditioner) {
       return "block-jacobi";
     case CgPreconditioner::Ssor:
       return "ssor";
+    case CgPreconditioner::Cholesky:
+      return "cholesky";
   }
   return "?";
 }
 
 std::expected<CgPreconditioner, std::string> preconditionerByName(std::string_view name) {
   for (CgPreconditioner p : {CgPreconditioner::Auto, CgPreconditioner::Jacobi,
-                             CgPreconditioner::BlockJacobi, CgPreconditioner::Ssor}) {
+                             CgPreconditioner::BlockJacobi, CgPreconditioner::Ssor,
+                             CgPreconditioner::Cholesky}) {
     if (name == preconditionerName(p)) return p;
   }
   return std::unexpected("unknown CG preconditioner '" + clip(std::string(name), 40) +
-                         "'; expected one of auto, jacobi, block-jacobi, ssor");
+                         "'; expected one of auto, jacobi, block-jacobi, ssor, cholesky");
 }
 
 const IntegratorInfo* findIntegrator(std::string_view name) {

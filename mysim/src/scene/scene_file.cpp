@@ -183,7 +183,7 @@ void applyMaterialTerms(Scene& scene) {
   const bool hinges = std::visit([](const auto& kind) { return kind.bendsByHinges(); }, scene.system);
   if (hinges && scene.integrator.preconditioner == CgPreconditioner::Ssor) {
     throw FieldError{"integrator.cg_preconditioner",
-                     "\"block-jacobi\", \"jacobi\" or \"auto\" with hinge bending (SSOR sweeps "
+                     "\"block-jacobi\", \"jacobi\", \"cholesky\" or \"auto\" with hinge bending (SSOR sweeps "
                      "the springs' matrix alone)"};
   }
 }

@@ -117,6 +117,22 @@ void SpringBlockMatrix::multiply(const Vector& in, Vector& out) const {
   multiplyPart(in, out, 1.0, Part::Both);
 }
 
+void SpringBlockMatrix::appendLowerTriangle(std::vector<Eigen::Triplet<double>>& out) const {
+  for (int i = 0; i < rows(); ++i) {
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c <= r; ++c) out.emplace_back(3 * i + r, 3 * i + c, diagonal_[i](r, c));
+    }
+    for (int e = row_offsets_[i]; e < upper_begin_[i]; ++e) {  // columns below the row
+      const Block& b = blocks_[entries_[e].spring];
+      const Mat3 block = b.alpha * Mat3::Identity() + b.s * b.s.transpose();
+      const int j = entries_[e].column;
+      for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 3; ++c) out.emplace_back(3 * i + r, 3 * j + c, -block(r, c));
+      }
+    }
+  }
+}
+
 void SpringBlockMatrix::applyDiagonalInverse(const Vector& r, Vector& z) const {
   const int n = rows();
   z.resize(r.size());

@@ -1,4 +1,5 @@
 #pragma once
+#include <Eigen/SparseCore>
 #include <utility>
 #include <vector>
 
@@ -41,6 +42,9 @@ class SpringBlockMatrix {
 
   // out = A in.
   void multiply(const Vector& in, Vector& out) const;
+  // Appends A's lower triangle, scalar entries with the diagonal blocks' (for StepFactor): every
+  // spring's block, zero or not, so the pattern is the same each step.
+  void appendLowerTriangle(std::vector<Eigen::Triplet<double>>& out) const;
   // z = P^-1 r for P the (block) diagonal.
   void applyDiagonalInverse(const Vector& r, Vector& z) const;
 

@@ -1,6 +1,6 @@
 // The two-pin catenary recognised from what the model is (a chain between two pins), not from
 // what the scene called it.
-// ctest-label: physics bullet
+// ctest-label: physics,bullet
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>

@@ -1,6 +1,6 @@
 // The discrete two-pin catenary (closed_form.h) against its continuous limit, the elastic
 // catenary (elastic_catenary.h): chains of 10 to 80 links of one cable converge at second order.
-// ctest-label: unit physics
+// ctest-label: unit,physics
 #include "compare/metrics/elastic_catenary.h"
 
 #include <gtest/gtest.h>

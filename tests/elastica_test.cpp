@@ -1,6 +1,6 @@
 // The heavy elastica (compare/metrics/heavy_elastica.h) and the cantilever reading: against the
 // linear beam, the cantilever standard's 41.5 degrees, and its own boundary condition.
-// ctest-label: unit physics
+// ctest-label: unit,physics
 #include "compare/metrics/heavy_elastica.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // Hinge bending (mysim/hinge.h) and material cloths (mysim/cloth_material.h): the energy's
 // continuum limit, its gradient against finite differences, invariances, and every integrator
 // family holding the same static equilibrium.
-// ctest-label: unit physics
+// ctest-label: unit,physics
 // 3 s in Release, over a minute under the sanitizers, where HingeBendingOpening runs every
 // family's hinge code on the same strip:
 // ctest-label HingeBendingSettled: physics,releaseonly

@@ -1,7 +1,7 @@
 // Round-off sensitivity (compare/studies/roundoff.h): a nudge of a few ulps grows by orders of
 // magnitude on the undamped swinging chain and stays at its size on the damped hanging one; two
 // engines' difference is told apart as identical, round-off, or real.
-// ctest-label: physics external
+// ctest-label: physics,external
 #include "compare/studies/roundoff.h"
 
 #include <gtest/gtest.h>

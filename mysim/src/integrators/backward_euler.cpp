@@ -70,8 +70,9 @@ class BackwardEuler final : public Integrator {
     const SpringBlockMatrix& A = *matrix_;
     // The factor, where chosen and positive definite (else block Jacobi, below); refactored only
     // when the last solve with it took more than kStaleIterations.
-    exact_ = preconditionerFor(h) == CgPreconditioner::Cholesky &&
-             (factored_ && !refactor_ ? true : (factored_ = factorStep(ps, h)));
+    const bool factoring = preconditionerFor(h) == CgPreconditioner::Cholesky;
+    if (factoring && (!factored_ || refactor_)) factored_ = factorStep(ps, h);
+    exact_ = factoring && factored_;
     if (exact_) {
       const CgResult cg = conjugateGradient(
           [this, &ps, h](const Vector& in, Vector& out) { multiply(ps, h, in, out); },

@@ -24,7 +24,7 @@ const GateTermEffect* effectOf(const std::vector<GateTermEffect>& effects,
 
 // The shipped cable with a ground plane 10 m below it, which it never reaches, held to 1 % of
 // the continuous catenary at 10 links; `needs` as given (null: none).
-std::vector<GateTermEffect> ablateCableOverGround(const nlohmann::json& needs) {
+std::vector<GateTermEffect> gateEffectsOverGround(const nlohmann::json& needs) {
   std::ifstream in(kRoot + "/scenes/material/cable_catenary.json");
   nlohmann::json scene = nlohmann::json::parse(in);
   scene["colliders"] = {{{"type", "plane"}, {"point", {0, -10, 0}}, {"normal", {0, 1, 0}}}};
@@ -46,7 +46,7 @@ std::vector<GateTermEffect> ablateCableOverGround(const nlohmann::json& needs) {
 }
 
 TEST(GateAblation, AColliderNoCheckReachesIsOfferedForDropping) {
-  const auto effects = ablateCableOverGround(nullptr);
+  const auto effects = gateEffectsOverGround(nullptr);
   const GateTermEffect* ground = effectOf(effects, "colliders");
   ASSERT_TRUE(ground);
   ASSERT_TRUE(ground->ran) << ground->problem;
@@ -57,7 +57,7 @@ TEST(GateAblation, AColliderNoCheckReachesIsOfferedForDropping) {
 }
 
 TEST(GateAblation, ATermTheSceneDeclaresIsNotOffered) {
-  const auto effects = ablateCableOverGround(nlohmann::json::array({"colliders"}));
+  const auto effects = gateEffectsOverGround(nlohmann::json::array({"colliders"}));
   const GateTermEffect* ground = effectOf(effects, "colliders");
   ASSERT_TRUE(ground);
   EXPECT_TRUE(ground->all_within);

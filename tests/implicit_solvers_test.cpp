@@ -26,7 +26,7 @@ namespace {
 
 constexpr double kH = 1.0 / 60.0;
 
-Model dampedCloth() {
+Model dampedClothModel() {
   Model model;
   ClothShape shape{.rows = 5, .cols = 5, .width = 0.4, .height = 0.4, .particle_mass = 0.01,
                    .hanging = true};
@@ -98,7 +98,7 @@ Vector solverStep(const std::string& name, int iterations, const ParticleSystem&
 // force code (spring damping, drag, wind at t + h), at an arbitrary x. Holds r to the ODE, so the
 // convergence tests below cannot agree with the reference on a wrong problem.
 TEST(ImplicitEulerStep, ResidualIsTheBackwardEulerEquationOfTheForceModel) {
-  ParticleSystem system(dampedCloth(), {});
+  ParticleSystem system(dampedClothModel(), {});
   const State s = perturbedStart(system);
   ImplicitEulerStep step;
   prepareImplicitEulerStep(system, s, kH, step);
@@ -127,7 +127,7 @@ TEST(ImplicitEulerStep, ResidualIsTheBackwardEulerEquationOfTheForceModel) {
 // across the springs) leaves 1.4e-3 m (checked): the bound catches a wrong damping derivation, not
 // only slow convergence.
 TEST(LocalGlobal, ReachesTheImplicitEulerStepAsIterationsGrow) {
-  ParticleSystem system(dampedCloth(), {});
+  ParticleSystem system(dampedClothModel(), {});
   const State s = perturbedStart(system);
   const Vector exact = newtonStep(system, s);
   const double e10 = (solverStep("local-global", 10, system, s) - exact).lpNorm<Eigen::Infinity>();
@@ -142,7 +142,7 @@ TEST(LocalGlobal, ReachesTheImplicitEulerStepAsIterationsGrow) {
 // Chebyshev acceleration (measured 1.4e-5 m at 10 passes, 3.1e-15 at 50, 5.6e-17 at 400; without
 // the spring damping's force term the error stays at 9.0e-4 m: checked).
 TEST(VertexBlockDescent, ReachesTheImplicitEulerStepAsIterationsGrow) {
-  ParticleSystem system(dampedCloth(), {});
+  ParticleSystem system(dampedClothModel(), {});
   const State s = perturbedStart(system);
   const Vector exact = newtonStep(system, s);
   const double e10 = (solverStep("vbd", 10, system, s) - exact).lpNorm<Eigen::Infinity>();
@@ -261,7 +261,7 @@ TEST(ColourOrderedSolvers, GiveTheSameBitsAtOneAndTwoThreads) {
 // The three-column solve equals Eigen's own solve of each column (the permutation and the unit
 // lower factor read the way Eigen stores them), on a mass-plus-Laplacian matrix of a cloth.
 TEST(SparseLdlt3, SolvesEachColumnAsEigenDoes) {
-  Model model = dampedCloth();
+  Model model = dampedClothModel();
   const int n = model.particleCount();
   std::vector<Eigen::Triplet<double>> entries;
   for (int p = 0; p < n; ++p) entries.emplace_back(p, p, 3600.0 * model.mass[p]);
@@ -292,7 +292,7 @@ TEST(SparseLdlt3, SolvesEachColumnAsEigenDoes) {
 // No spring joins two particles of one colour (what makes a colour safe to relax in parallel),
 // and every particle has a colour.
 TEST(GraphColoring, NoSpringJoinsTwoParticlesOfOneColor) {
-  ParticleSystem system(dampedCloth(), {});
+  ParticleSystem system(dampedClothModel(), {});
   const auto colors = colorParticles(system.adjacency());
   std::vector<int> color_of(system.particleCount(), -1);
   for (int c = 0; c < static_cast<int>(colors.size()); ++c) {

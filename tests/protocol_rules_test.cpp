@@ -15,9 +15,6 @@ namespace {
 
 using test_support::registryWith;
 
-mysim::Scene scene(const EngineRegistry& registry, const std::string& name) {
-  return test_support::shippedScene(registry, name);
-}
 
 // An engine's run of a shipped scene beside mysim's, with the integrator given (XPBD at 4
 // substeps of 5 passes), dt (0: the scene's) and duration; both complete, frame for frame.
@@ -28,7 +25,7 @@ struct PairOfRuns {
 std::optional<PairOfRuns> runBeside(const EngineRegistry& registry, const std::string& engine,
                                     const std::string& name, const std::string& integrator,
                                     double dt, double duration) {
-  mysim::Scene s = scene(registry, name);
+  mysim::Scene s = test_support::shippedScene(registry, name);
   s.integrator.name = integrator;
   if (integrator == "xpbd") {
     s.integrator.values["substeps"] = 4;

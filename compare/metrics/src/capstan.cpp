@@ -16,7 +16,6 @@ constexpr double kTouching = 1e-6;  // m
 // How much heavier than every other particle each end mass must be.
 constexpr double kEndMassFactor = 10.0;
 
-mysim::Vec3 rowPosition(const mysim::ParticleRows& frame, int p) { return frame.row(p).head<3>().transpose(); }
 
 // The one collider with friction, if it is the only one and a sphere.
 const mysim::Sphere* frictionSphere(const mysim::Model& model) {
@@ -53,15 +52,15 @@ std::optional<Capstan> capstanOf(const mysim::Model& model, const mysim::Particl
   const int n = model.particleCount();
   int first_touch = -1, last_touch = -1;
   for (int p = 0; p < n; ++p) {
-    const double gap = (rowPosition(first, p) - sphere->center).norm() - (sphere->radius + sphere->margin);
+    const double gap = (mysim::rowPosition(first, p) - sphere->center).norm() - (sphere->radius + sphere->margin);
     if (gap > kTouching) continue;
     if (first_touch < 0) first_touch = p;
     else if (p != last_touch + 1) return std::nullopt;  // two separate runs of contact
     last_touch = p;
   }
   if (first_touch < 1 || last_touch > n - 2) return std::nullopt;
-  const mysim::Vec3 in = (rowPosition(first, first_touch) - rowPosition(first, first_touch - 1)).normalized();
-  const mysim::Vec3 out = (rowPosition(first, last_touch + 1) - rowPosition(first, last_touch)).normalized();
+  const mysim::Vec3 in = (mysim::rowPosition(first, first_touch) - mysim::rowPosition(first, first_touch - 1)).normalized();
+  const mysim::Vec3 out = (mysim::rowPosition(first, last_touch + 1) - mysim::rowPosition(first, last_touch)).normalized();
   Capstan c;
   c.wrap = std::acos(std::clamp(in.dot(out), -1.0, 1.0));
   c.mu = sphere->friction.static_coefficient;
@@ -77,7 +76,7 @@ std::optional<Capstan> capstanOf(const mysim::Model& model, const mysim::Particl
   for (const mysim::Spring& s : model.springs) length += s.rest_length;
   const double per_length = interior_mass / length;
   auto heightAbove = [&](int contact, int end) {
-    return std::max(0.0, (rowPosition(first, end) - rowPosition(first, contact)).dot(c.down));
+    return std::max(0.0, (mysim::rowPosition(first, end) - mysim::rowPosition(first, contact)).dot(c.down));
   };
   const double before = per_length * heightAbove(first_touch, 0);
   const double after = per_length * heightAbove(last_touch, n - 1);
@@ -92,7 +91,7 @@ double loadDriftOverLastHalf(const Capstan& capstan, const mysim::RunRecord& run
   while (from + 1 < run.times.size() && run.times[from] < half) ++from;
   double drift = 0.0;
   for (std::size_t f = from; f < run.frames.size(); ++f) {
-    const mysim::Vec3 moved = rowPosition(run.frames[f], capstan.load) - rowPosition(run.frames[from], capstan.load);
+    const mysim::Vec3 moved = mysim::rowPosition(run.frames[f], capstan.load) - mysim::rowPosition(run.frames[from], capstan.load);
     drift = std::max(drift, std::abs(moved.dot(capstan.down)));
   }
   return drift;

@@ -18,9 +18,6 @@ constexpr double kUnstressedPerNewton = 1e-10;  // m
 // How alike the particles' start velocities must be to move as one body.
 constexpr double kSameVelocity = 1e-12;  // m/s
 
-mysim::Vec3 rowPosition(const mysim::ParticleRows& frame, int p) {
-  return frame.row(p).head<3>().transpose();
-}
 mysim::Vec3 rowVelocity(const mysim::ParticleRows& frame, int p) {
   return frame.row(p).tail<3>().transpose();
 }
@@ -33,7 +30,7 @@ const mysim::Plane* restingPlane(const mysim::Model& model, const mysim::Particl
   if (!plane) return nullptr;
   for (int p = 0; p < model.particleCount(); ++p) {
     if (model.pinned[p]) return nullptr;
-    const double gap = signedDistance(*plane, rowPosition(first, p)) - plane->margin;
+    const double gap = signedDistance(*plane, mysim::rowPosition(first, p)) - plane->margin;
     if (std::abs(gap) > kOnPlane) return nullptr;
   }
   return plane;
@@ -54,7 +51,7 @@ std::optional<std::string> notABlock(const mysim::Model& model, const mysim::Par
   const int n = model.particleCount();
   mysim::Vector x(3 * n);
   double mass = 0.0;
-  for (int p = 0; p < n; ++p) x.segment<3>(3 * p) = rowPosition(first, p), mass += model.mass[p];
+  for (int p = 0; p < n; ++p) x.segment<3>(3 * p) = mysim::rowPosition(first, p), mass += model.mass[p];
   const mysim::EnergyTerms e = mechanicalEnergy(model, x, mysim::Vector::Zero(3 * n));
   if (e.spring > kUnstressedPerNewton * mass * model.gravity.norm()) {
     return std::string("the body starts stressed (") + std::to_string(e.spring) +
@@ -120,7 +117,7 @@ std::optional<ClosedFormResult> slidingError(const mysim::Model& model, const my
   auto centroid = [&](const mysim::ParticleRows& frame) {
     mysim::Vec3 c = mysim::Vec3::Zero();
     double mass = 0.0;
-    for (int p = 0; p < model.particleCount(); ++p) c += model.mass[p] * rowPosition(frame, p), mass += model.mass[p];
+    for (int p = 0; p < model.particleCount(); ++p) c += model.mass[p] * mysim::rowPosition(frame, p), mass += model.mass[p];
     return mysim::Vec3(c / mass);
   };
   SlidingBlock block{centroid(first), rowVelocity(first, 0), model.gravity + pressing * plane->normal,

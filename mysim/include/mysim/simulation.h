@@ -13,6 +13,9 @@ namespace mysim {
 
 using ParticleRows = Eigen::Matrix<double, Eigen::Dynamic, 6>;  // (N x 6): x y z vx vy vz
 
+// Particle p's position in a frame of rows.
+inline Vec3 rowPosition(const ParticleRows& rows, int p) { return rows.row(p).head<3>().transpose(); }
+
 // What a run produced, the same for every engine (mysim or a Bullet reference).
 struct RunRecord {
   std::string engine;

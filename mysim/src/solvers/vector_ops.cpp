@@ -3,7 +3,7 @@
 namespace mysim {
 namespace {
 // Entries below which one thread is faster (512 particles: 3072 state entries).
-constexpr long kParallelEntries = 3072;
+constexpr long kParallelVectorLength = 3072;
 }  // namespace
 
 void addScaled(const Vector& y, double s, const Vector& k, Vector& out) {
@@ -12,7 +12,7 @@ void addScaled(const Vector& y, double s, const Vector& k, Vector& out) {
   const double* py = y.data();
   const double* pk = k.data();
   double* po = out.data();
-#pragma omp parallel for simd schedule(static) if (n >= kParallelEntries)
+#pragma omp parallel for simd schedule(static) if (n >= kParallelVectorLength)
   for (long i = 0; i < n; ++i) po[i] = py[i] + s * pk[i];
 }
 
@@ -20,7 +20,7 @@ void copyParallel(Eigen::Ref<const Vector> from, Eigen::Ref<Vector> to) {
   const long n = from.size();
   const double* pf = from.data();
   double* pt = to.data();
-#pragma omp parallel for simd schedule(static) if (n >= kParallelEntries)
+#pragma omp parallel for simd schedule(static) if (n >= kParallelVectorLength)
   for (long i = 0; i < n; ++i) pt[i] = pf[i];
 }
 

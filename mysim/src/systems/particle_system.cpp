@@ -1,4 +1,6 @@
 #include "mysim/particle_system.h"
+#include "mysim/contact.h"
+#include "mysim/energy.h"
 
 #include <algorithm>
 #include <cmath>

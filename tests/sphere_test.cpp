@@ -8,6 +8,7 @@
 // ctest-label: physics
 // ctest-label SphereCollider: unit
 // ctest-label ClothOnSphereIterative: physics,releaseonly
+// ctest-label ClothOnSphereBackwardEuler: physics,releaseonly
 #include <gtest/gtest.h>
 
 #include "mysim/contact.h"
@@ -71,9 +72,15 @@ TEST_P(ClothOnSphere, NeverEntersTheSphereAndComesToRestWithoutJitter) {
   expectItRestsOnTheSphereWithoutJitter(GetParam());
 }
 
-INSTANTIATE_TEST_SUITE_P(ExplicitAndImplicit, ClothOnSphere,
-                         ::testing::Values("rk4", "symplectic-euler", "backward-euler"),
+INSTANTIATE_TEST_SUITE_P(Explicit, ClothOnSphere, ::testing::Values("rk4", "symplectic-euler"),
                          testing::IntegratorParamName());
+
+// Backward Euler holds the contacts inside its solve too: the same rest. Release only: 26 s under
+// the sanitizers, where StepFactor.ContactsHeldOnASphereGiveTheStepsOfBlockJacobi runs its held
+// steps on this sphere.
+TEST(ClothOnSphereBackwardEuler, NeverEntersTheSphereAndComesToRestWithoutJitter) {
+  expectItRestsOnTheSphereWithoutJitter("backward-euler");
+}
 
 // The iterative families (the catalogue's), local/global and VBD holding the contacts inside
 // their solve (integrators/contact_holds.h): the same rest. Release only: 75 s and 51 s under the

@@ -14,6 +14,7 @@
 
 #include "compare/metrics/elastic_catenary.h"
 #include "compare/metrics/heavy_elastica.h"
+#include "per_test_file.h"
 
 namespace springcheck {
 namespace {
@@ -44,10 +45,7 @@ std::expected<Ablation, std::string> ablateCableOverGround(const nlohmann::json&
   nlohmann::json scene = nlohmann::json::parse(in);
   scene["colliders"] = {{{"type", "plane"}, {"point", {0, -10, 0}}, {"normal", {0, 1, 0}}}};
   if (!needs.is_null()) scene["needs"] = needs;
-  // A file per test: ctest runs this file's tests side by side, and one writing the other's scene
-  // (with `needs`) while it was read made AColliderTheClothNeverReachesDoesNotMatter fail once.
-  const std::string path = testing::TempDir() + "/cable_over_ground_" +
-                           testing::UnitTest::GetInstance()->current_test_info()->name() + ".json";
+  const std::string path = test_support::perTestJsonPath("cable_over_ground");
   std::ofstream(path) << scene.dump();
   const double sag = levelElasticCatenary(1.0, 1.0, 0.05 * 9.8, 50.0).midspan_sag;
   return ablate(EngineRegistry(), path, setup(10, "backward-euler", 0.004), "sag_lowest", sag,

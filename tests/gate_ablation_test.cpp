@@ -5,6 +5,7 @@
 // in the suite GateAblation (the cable over the ground).
 // ctest-label GateAblationOfTheCantilever: physics,releaseonly
 #include "compare/studies/gate_ablation.h"
+#include "per_test_file.h"
 #include "source_root.h"
 
 #include <gtest/gtest.h>
@@ -32,10 +33,7 @@ std::vector<GateTermEffect> gateEffectsOverGround(const nlohmann::json& needs) {
   nlohmann::json scene = nlohmann::json::parse(in);
   scene["colliders"] = {{{"type", "plane"}, {"point", {0, -10, 0}}, {"normal", {0, 1, 0}}}};
   if (!needs.is_null()) scene["needs"] = needs;
-  // A file per test: ctest runs this file's tests side by side, and one writing the other's scene
-  // while it is read made the pair fail now and then.
-  const std::string path = testing::TempDir() + "/gated_cable_over_ground_" +
-                           testing::UnitTest::GetInstance()->current_test_info()->name() + ".json";
+  const std::string path = test_support::perTestJsonPath("gated_cable_over_ground");
   std::ofstream(path) << scene.dump();
   const std::string check = R"({"checks": [{"scene": ")" + path + R"(", "resolution": 10,
       "dt": 0.016, "engines": ["mysim:backward-euler"], "metric": "sag_lowest",

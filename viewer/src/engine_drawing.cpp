@@ -31,7 +31,7 @@ void drawCircle(const Rows& rows) {
 
 void drawShadedCloth(const mysim::GridShape& grid, const Rows& rows) {
   mysim::Vector x(3 * rows.rows());
-  for (int p = 0; p < rows.rows(); ++p) x.segment<3>(3 * p) = rows.row(p).head<3>().transpose();
+  for (int p = 0; p < rows.rows(); ++p) x.segment<3>(3 * p) = mysim::rowPosition(rows, p);
   const std::vector<mysim::Vec3> normals = mysim::vertexNormals(grid, x);
   glEnable(GL_LIGHTING);
   glColor3f(0.85f, 0.35f, 0.25f);

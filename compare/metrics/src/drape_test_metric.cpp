@@ -119,7 +119,7 @@ std::optional<DrapeTestReading> readDrapeTest(const mysim::Model& model,
   }
   std::sort(rim.begin(), rim.end());
   rim.erase(std::unique(rim.begin(), rim.end()), rim.end());
-  for (const auto& [angle, p] : rim) r.rim_radius.push_back(project(frame.row(p).head<3>().transpose()).norm());
+  for (const auto& [angle, p] : rim) r.rim_radius.push_back(project(mysim::rowPosition(frame, p)).norm());
   r.folds = lobes(r.rim_radius);
   return r;
 }

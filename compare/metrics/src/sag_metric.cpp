@@ -26,7 +26,7 @@ SagSeries sagOverTime(const mysim::Model& model, const mysim::RunRecord& run) {
 
   SagSeries sag;
   for (const mysim::ParticleRows& frame : run.frames) {
-    auto depth = [&](int p) { return down.dot(frame.row(p).head<3>().transpose()); };
+    auto depth = [&](int p) { return down.dot(mysim::rowPosition(frame, p)); };
     double pin_level = start_top;
     if (!pins.empty()) {
       pin_level = 0.0;

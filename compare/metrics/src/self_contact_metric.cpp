@@ -156,7 +156,7 @@ std::optional<SelfContact> selfContactOverRun(const mysim::Model& model, const m
   std::vector<int> seen;
   std::vector<Vec3> x(model.particleCount());
   for (std::size_t f = 0; f < run.frames.size(); ++f) {
-    for (int p = 0; p < model.particleCount(); ++p) x[p] = run.frames[f].row(p).head<3>().transpose();
+    for (int p = 0; p < model.particleCount(); ++p) x[p] = mysim::rowPosition(run.frames[f], p);
     const FrameContact frame = cloth ? clothFrame(mesh, x, grid, seen) : chainFrame(mesh, x, grid);
     if (cloth && frame.intersections > *result.intersections) {
       result.intersections = frame.intersections;

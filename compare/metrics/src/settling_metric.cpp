@@ -21,7 +21,7 @@ double maxStrainOverRun(const mysim::Model& model, const mysim::RunRecord& run) 
   mysim::Vector x;
   for (const mysim::ParticleRows& frame : run.frames) {
     x.resize(3 * frame.rows());
-    for (int p = 0; p < frame.rows(); ++p) x.segment<3>(3 * p) = frame.row(p).head<3>().transpose();
+    for (int p = 0; p < frame.rows(); ++p) x.segment<3>(3 * p) = mysim::rowPosition(frame, p);
     worst = std::max(worst, mysim::maxSpringStrain(model.springs, x));
   }
   return worst;

@@ -23,6 +23,9 @@ eval "\"\$exe\" ${suggested#springcheck } --out \"\$work/suite\"" > suite.log 2>
   || fail "the README's suite command exits $?: $(tail -8 suite.log)"
 grep -q "gate: [0-9]* passed, 0 failed" suite.log || fail "no passing gate line: $(tail -3 suite.log)"
 [ -d "$work/suite/cloth_hanging/first" ] || fail "the suite did not run the engine on cloth_hanging"
+# Only the engines its checks name (the README's --engines): no Bullet engine the checks leave out.
+[ ! -e "$work/suite/cloth_hanging/bullet-classic" ] || fail "the suite ran bullet-classic, which no check names"
+[ -d "$work/suite/cloth_hanging/bullet-deformable" ] || fail "the suite did not run bullet-deformable, which a check names"
 echo "ok: the skeleton passes its suite and gate from an unrelated folder"
 
 before=$(ls -l "$work/x")

@@ -1,3 +1,4 @@
+#include <expected>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -8,6 +9,7 @@
 #include "compare/io/scene_files.h"
 #include "compare/studies/comparison.h"
 #include "compare/io/atomic_file.h"
+#include "compare/io/text_format.h"
 #include "compare/studies/gate.h"
 #include "compare/studies/gate_report_formats.h"
 #include "compare/studies/parallel_jobs.h"
@@ -21,6 +23,7 @@ struct SuiteOptions {
   std::string dir = dataFile("scenes");
   std::string out = "out/suite";
   std::vector<std::string> engines_files;
+  std::string engines;  // comma-separated; empty: every engine of the registry
   Timing timing;
   std::string tolerances;  // also gate the runs against this file
   std::string gate_json;   // and write the gate's results here
@@ -64,14 +67,15 @@ struct SceneOutcome {
 };
 
 SceneOutcome compareOneScene(const EngineRegistry& registry, const std::string& file,
-                             const SuiteOptions& o, const Timing& timing, int jobs) {
+                             const std::vector<std::string>& engines, const SuiteOptions& o,
+                             const Timing& timing, int jobs) {
   SceneOutcome outcome;
   auto scene = registry.loadScene(file);
   if (!scene) {
     outcome.error = scene.error();
     return outcome;
   }
-  auto comparison = compareScene(registry, *scene, registry.names(), timing);
+  auto comparison = compareScene(registry, *scene, engines, timing);
   if (!comparison) {
     outcome.error = comparison.error();
     return outcome;
@@ -97,15 +101,29 @@ SceneOutcome compareOneScene(const EngineRegistry& registry, const std::string& 
 // cores), in the files' order.
 std::vector<SceneOutcome> compareScenes(const EngineRegistry& registry,
                                         const std::vector<std::string>& files,
+                                        const std::vector<std::string>& engines,
                                         const SuiteOptions& o) {
   const int jobs = jobCount(o.jobs, files.size());
   Timing timing = o.timing;
   if (timing.threads == 0 && jobs > 1) timing.threads = std::max(1, mysim::availableCores() / jobs);
   std::vector<SceneOutcome> outcomes(files.size());
   forEachInParallel(files.size(), jobs, [&](std::size_t k) {
-    outcomes[k] = compareOneScene(registry, files[k], o, timing, jobs);
+    outcomes[k] = compareOneScene(registry, files[k], engines, o, timing, jobs);
   });
   return outcomes;
+}
+
+// The engines --engines names ("all" and the like expanded), each one the registry knows; every
+// engine of the registry when it names none.
+std::expected<std::vector<std::string>, std::string> suiteEngines(const EngineRegistry& registry,
+                                                                  const std::string& listed) {
+  if (listed.empty()) return registry.names();
+  std::vector<std::string> engines = registry.expand(splitList(listed));
+  if (engines.empty()) return std::unexpected("expected at least one engine, got '" + listed + "'");
+  for (const std::string& spec : engines) {
+    if (auto known = registry.check(spec); !known) return std::unexpected(known.error());
+  }
+  return engines;
 }
 
 // Every scene under a directory in every engine that takes it (every engine of the registry,
@@ -133,7 +151,12 @@ int runSuite(const SuiteOptions& o) {
     }
     tolerances = std::move(*loaded);
   }
-  std::vector<SceneOutcome> outcomes = compareScenes(*registry, *files, o);
+  const auto engines = suiteEngines(*registry, o.engines);
+  if (!engines) {
+    std::cerr << "error: --engines: " << engines.error() << '\n';
+    return kBadInput;
+  }
+  std::vector<SceneOutcome> outcomes = compareScenes(*registry, *files, *engines, o);
   int code = kOk;
   ComparisonCache done;
   for (std::size_t k = 0; k < files->size(); ++k) {
@@ -165,6 +188,10 @@ void addSuiteCommand(CLI::App& app, int& exit_code) {
       "suite", "Run every scene under a directory in every engine that takes it, and compare");
   suite->add_option("dir", options->dir, "Scene directory")->capture_default_str();
   suite->add_option("--out", options->out, "Output root")->capture_default_str();
+  suite->add_option("--engines", options->engines,
+                    "Comma-separated engines (default: every engine, your own included; all: "
+                    "every engine with mysim once per integrator). Engines the tolerances' checks "
+                    "name but this leaves out are run by the gate");
   addEnginesFileOption(suite, options->engines_files);
   addTimingOptions(suite, options->timing, 1);
   suite->add_option("--tolerances", options->tolerances,

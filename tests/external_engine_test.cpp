@@ -62,7 +62,8 @@ TEST(ModelFile, NamesOnlyTheParametersOfTheIntegratorInUse) {
   using V = std::vector<std::string>;
   EXPECT_EQ(keys("rk4"), V({"name"}));
   EXPECT_EQ(keys("xpbd"),
-            V({"iterations", "max_halvings", "max_iterations", "name", "substeps", "tolerance"}));
+            V({"iterations", "max_halvings", "max_iterations", "name", "substeps", "tolerance",
+               "warm_start"}));
   EXPECT_EQ(keys("dopri5"), V({"abs_tolerance", "name", "rel_tolerance"}));
   EXPECT_EQ(keys("backward-euler"),
             V({"cg_max_iterations", "cg_preconditioner", "cg_tolerance", "name"}));

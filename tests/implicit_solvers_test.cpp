@@ -204,7 +204,9 @@ TEST(ImplicitSolvers, KeepLinearMomentumOfAFreeBody) {
     for (int p = 0; p < 6; ++p) total += model.mass[p] * s.y.segment<3>(18 + 3 * p);
     return total;
   };
-  for (auto [name, passes, bound] : {std::tuple{"local-global", 10, 1e-10}, {"xpbd", 10, 1e-11},
+  // XPBD's velocities are position differences over h_s, so their round-off grows with the
+  // substeps: 4.9e-12 at 10 substeps, 1.6e-11 at the default 40 (warm started; 3.9e-11 from 0).
+  for (auto [name, passes, bound] : {std::tuple{"local-global", 10, 1e-10}, {"xpbd", 10, 4e-11},
                                      {"vbd", 200, 1e-8}}) {
     ParticleSystem system(model, {});
     IntegratorSettings settings;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <string>
 
 #include "mysim/chain.h"
 #include "test_support.h"
@@ -94,8 +95,11 @@ TEST_P(EveryIntegrator, MomentumIsConservedWithoutExternalForces) {
   const State start = system.initialState();
   const State end = testing::integrate(system, *method, start, 0.001, 1000);
   // Spring forces cancel in pairs, so every explicit stage conserves momentum to round-off.
-  // Backward Euler's CG (tolerance 1e-12) leaves a residual of that relative size.
-  EXPECT_LT((momentum(end) - momentum(start)).norm(), 1e-10);
+  // Backward Euler's CG (tolerance 1e-12) leaves a residual of that relative size. XPBD's
+  // velocities are position differences over h_s, their round-off growing with the substeps
+  // (3.0e-10 at its default 40).
+  const double bound = std::string(GetParam()) == "xpbd" ? 1e-9 : 1e-10;
+  EXPECT_LT((momentum(end) - momentum(start)).norm(), bound);
 }
 
 INSTANTIATE_TEST_SUITE_P(All, EveryIntegrator, ::testing::ValuesIn(testing::particleIntegrators()),

@@ -16,7 +16,7 @@ rules say ("Matching mysim's integrators to the last bit"): forces of gravity, d
 springs and hinges summed in mysim's order; pins on their path after the step; particles touching
 a collider (sphere, plane, box) moved onto its surface grown by its margin, stripped of their
 inward velocity, with its Coulomb friction. So it agrees with `mysim:symplectic-euler` and
-`mysim:xpbd` to the bit (tests/protocol_rules_test.cpp). Copy it as the start of your own engine.
+`mysim:xpbd` at `tolerance` 0 to the bit (tests/protocol_rules_test.cpp). Copy it to start yours.
 """
 import json
 import math

@@ -17,7 +17,8 @@ namespace {
 // constraint C = |x_i - x_j| - rest with compliance alpha = 1/k; its damping c enters as XPBD's
 // constraint damping beta = c. A substep of h_s = h / substeps:
 //   v += h_s f_ext / m (gravity, drag, wind),  x_prev = x,  x += h_s v,  pins to x_pin(t + h_s),
-//   lambda = 0, then `iterations` Gauss-Seidel passes over the springs, colour by colour:
+//   lambda = 0 (warm_start: the last substep's, its push applied first), then `iterations`
+//   Gauss-Seidel passes over the springs, colour by colour:
 //     alpha~ = alpha / h_s^2,  gamma = alpha~ beta h_s = c / (k h_s),
 //     dlambda = (-C - alpha~ lambda - gamma grad C . (x - x_prev)) / ((1 + gamma)(w_i + w_j) +
 //     alpha~) x_i += w_i dlambda n,  x_j -= w_j dlambda n,  lambda += dlambda   (eq. 18 and 26)
@@ -30,7 +31,8 @@ namespace {
 // any thread count.
 class Xpbd final : public Integrator {
  public:
-  Xpbd(int substeps, PassControl control) : substeps_(substeps), control_(control) {}
+  Xpbd(int substeps, PassControl control, bool warm_start)
+      : substeps_(substeps), control_(control), warm_start_(warm_start) {}
 
   StepCounts step(OdeSystem& system, State& s, double h) override {
     ParticleSystem& ps = *system.particles();
@@ -42,8 +44,12 @@ class Xpbd final : public Integrator {
     StepCounts counts{.accepted = 1, .derivative_evaluations = substeps_};
     for (int sub = 0; sub < substeps_; ++sub) {
       predict(ps, s, hs);
-      lambda_.setZero();
-      hinge_lambda_.setZero();
+      if (warm_start_) {
+        pushCarried(ps.model(), s);
+      } else {
+        lambda_.setZero();
+        hinge_lambda_.setZero();
+      }
       counts.linear_iterations += solveSubstep(ps, s, counts);
       s.y.tail(3 * n) = (s.y.head(3 * n) - x_prev_) / hs;
       // Pins on their path with its velocity, then the contacts: after every substep.
@@ -82,6 +88,13 @@ class Xpbd final : public Integrator {
     hinge_alpha_.resize(static_cast<Eigen::Index>(model.hinges.size()));
     for (int k = 0; k < static_cast<int>(model.hinges.size()); ++k) {
       hinge_alpha_[k] = 1.0 / (model.hinges[k].stiffness * hs * hs);
+    }
+    // lambda is an impulse times h_s (k C h_s^2 at rest): carried to substeps of another length
+    // it keeps its force.
+    if (prepared_hs_ > 0.0) {
+      const double scale = (hs * hs) / (prepared_hs_ * prepared_hs_);
+      lambda_ *= scale;
+      hinge_lambda_ *= scale;
     }
     prepared_hs_ = hs;
     hs2_ = hs * hs;
@@ -166,6 +179,43 @@ class Xpbd final : public Integrator {
     }
   }
 
+  // Warm start: the last substep's multipliers pushed again along each constraint's gradient at
+  // the predicted positions, as the passes would push them (the same fixed point, started nearer:
+  // at rest the multipliers that held the cloth hold it again, so the passes begin at the
+  // equilibrium's residual instead of at the whole load's). Why: started from 0 every substep,
+  // the passes stop once the residual is under the tolerance, and a cloth at rest then sits
+  // where that residual balances, up to `tolerance` of its elastic stretch away from the
+  // equilibrium (1.3 mm on the 128 x 128 check cloth, docs/performance.md).
+  void pushCarried(const Model& model, State& s) {
+    double* x = s.y.data();
+    int begin = 0;
+    for (const std::vector<int>& color : colors_) {
+      const int count = static_cast<int>(color.size());
+      const PackedSpring* springs = packed_.data() + begin;
+      const double* lambda = lambda_.data() + begin;
+      begin += count;
+#pragma omp parallel for schedule(static) if (count >= kParallelSprings)
+      for (int c = 0; c < count; ++c) {
+        const PackedSpring& sp = springs[c];
+        Eigen::Map<Vec3> xi(x + 3 * sp.i), xj(x + 3 * sp.j);
+        const Vec3 d = xi - xj;
+        const double length = d.norm();
+        if (sp.wi + sp.wj == 0.0 || length == 0.0) continue;
+        const Vec3 push = (lambda[c] / length) * d;
+        xi += sp.wi * push;
+        xj -= sp.wj * push;
+      }
+    }
+    for (int k = 0; k < static_cast<int>(model.hinges.size()); ++k) {
+      const Hinge& hinge = model.hinges[k];
+      const Vec3 lambda = hinge_lambda_.segment<3>(3 * k);
+      for (int a = 0; a < 4; ++a) {
+        const int p = hinge.particle[a];
+        Eigen::Map<Vec3>(x + 3 * p) += (hinge.weight[a] * inverse_mass_[p]) * lambda;
+      }
+    }
+  }
+
   // Hinges (hinge.h) as vector constraints C = b = sum w_a x_a with compliance 1/k (energy
   // 1/2 k |C|^2), grad_a C = w_a I, so XPBD's update is, with alpha~ = 1 / (k h_s^2),
   //   dlambda = (-C - alpha~ lambda) / (sum_a w_a^2 / m_a + alpha~),  x_a += w_a dlambda / m_a.
@@ -201,13 +251,15 @@ class Xpbd final : public Integrator {
   };
   int substeps_;
   PassControl control_;
+  bool warm_start_;
   double prepared_hs_ = 0.0;
   double hs2_ = 0.0;  // prepared_hs_^2: k (C + alpha~ lambda) = (C + alpha~ lambda) / (alpha~ h_s^2)
   static double square(double v) { return v * v; }
   std::vector<PackedSpring> packed_;  // (S) the springs in colour order, for substeps of prepared_hs_
   std::vector<std::vector<int>> colors_;
   Vector lambda_;        // (S) accumulated multiplier of each spring (colour order), this substep
-  Vector hinge_lambda_;  // (3H) accumulated multiplier of each hinge, this substep
+  Vector hinge_lambda_;  // (3H) accumulated multiplier of each hinge, this substep (warm_start:
+                         // from the last substep's)
   Vector hinge_alpha_;   // (H) 1 / (k h_s^2)
   Vector residual_squares_, hinge_residual_squares_;  // (S), (H) this pass's, when measured
   Vector inverse_mass_;  // (N) 0 for pinned particles
@@ -217,7 +269,11 @@ class Xpbd final : public Integrator {
 }  // namespace
 
 std::unique_ptr<Integrator> makeXpbd(const IntegratorSettings& s) {
-  return std::make_unique<Xpbd>(static_cast<int>(s.value("substeps")), PassControl::from(s));
+  // Warm starts with a tolerance only: the fixed-count form (tolerance 0) is published XPBD and
+  // the protocol's rule, every substep from lambda = 0.
+  const bool warm_start = s.value("warm_start") != 0.0 && s.value("tolerance") > 0.0;
+  return std::make_unique<Xpbd>(static_cast<int>(s.value("substeps")), PassControl::from(s),
+                                warm_start);
 }
 
 }  // namespace mysim

@@ -82,15 +82,19 @@ std::string checkedEngines(const std::string& name) {
   return list;
 }
 
+// The suite command the README and the "next:" line suggest (one spelling for both).
+std::string suiteCommand(const std::string& dir, const std::string& name) {
+  return "springcheck suite " + dataFile("scenes/matched") + " --engines " + checkedEngines(name) +
+         " --engines-file " + dir + "/engines.json --tolerances " + dir + "/tolerances.json";
+}
+
 std::string readme(const std::string& dir, const std::string& name) {
   std::ostringstream s;
   s << "# " << name << ": an external engine for springcheck\n\n"
     << "Made by `springcheck engine init`. It runs and passes its gate as it is:\n\n"
     << "```sh\n"
     << "springcheck gate --tolerances " << dir << "/tolerances.json\n"
-    << "springcheck suite " << dataFile("scenes/matched") << " --engines "
-    << checkedEngines(name) << " --engines-file " << dir << "/engines.json --tolerances " << dir
-    << "/tolerances.json   # every matched scene, in the engines the checks name\n"
+    << suiteCommand(dir, name) << "   # every matched scene, in the engines the checks name\n"
     << "```\n\n"
     << "- `" << name << ".py`: the simulator, symplectic Euler with numpy. Replace its stepping "
     << "with yours; keep reading the model file and writing `times.npy`, `trajectory.npy` and "
@@ -153,9 +157,7 @@ int init(const std::string& dir, const std::string& name) {
   std::cout << "engine '" << name << "' written to " << dir << ": " << name
             << ".py, engines.json, tolerances.json, README.md\n"
             << "next: springcheck gate --tolerances " << dir << "/tolerances.json\n"
-            << "      springcheck suite " << dataFile("scenes/matched") << " --engines "
-            << checkedEngines(name) << " --engines-file " << dir << "/engines.json --tolerances "
-            << dir << "/tolerances.json\n";
+            << "      " << suiteCommand(dir, name) << '\n';
   return kOk;
 }
 

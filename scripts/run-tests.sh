@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The whole test suite, twice: a Release build and every test, then every test again in a build
 # with AddressSanitizer and UndefinedBehaviorSanitizer (the debug preset, -O1 so it runs in
-# minutes), except those labelled "tooling" (tests/CMakeLists.txt: their time is Python,
+# minutes), except those labelled "tooling" (tests/cli_tests.cmake: their time is Python,
 # matplotlib, Slurm or a nested CMake build, not our C++) and "slow" (whole runs of every shipped
 # scene in every engine, the full gate, the killed-process test: 16 of the sanitizer pass's 29
 # CPU-minutes; the sanitizers run every scene's opening steps in every engine instead) and

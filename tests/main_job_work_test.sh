@@ -13,7 +13,7 @@ SPRINGCHECK_BUILD="$build" SPRINGCHECK_OUT="$out" "$src/scripts/main-job.sh" > "
 rc=$?
 if [ "$rc" -ne 0 ]; then
   # The tolerance gate's failed checks with their reasons (this test is the gate in a build with
-  # matplotlib: tests/CMakeLists.txt), then the end of the log.
+  # matplotlib: tests/cli_tests.cmake), then the end of the log.
   grep -A2 '^FAIL ' "$out.log" | head -60
   tail -40 "$out.log"
   echo "FAIL: the main job exited $rc (log: $out.log)"

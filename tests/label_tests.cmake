@@ -13,6 +13,9 @@ function(discover_labelled_tests target)
   foreach(_source IN LISTS _sources)
     get_filename_component(_path ${_source} ABSOLUTE BASE_DIR ${CMAKE_CURRENT_SOURCE_DIR})
     file(READ ${_path} _text)
+    # The labels and suites are read here, at configure time: an edited test file configures
+    # again, so a new or renamed suite is registered (without it, an incremental build left it out).
+    set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${_path})
     if(NOT _text MATCHES "// ctest-label: ([a-z,]+)")
       message(FATAL_ERROR "${_path}: no '// ctest-label: LABEL' line (tests/label_tests.cmake)")
     endif()

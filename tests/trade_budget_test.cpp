@@ -5,6 +5,9 @@
 // releaseonly: the spatial part's own refinement is 25 s under the sanitizers; the part's code runs
 // there in ErrorBudget.ThePartsAddUpToThePhysicalError.
 // ctest-label ErrorBudgetOnFinerMeshes: physics,releaseonly
+// releaseonly too: the temporal and solver parts' orders (8 s each under the sanitizers, four and
+// five XPBD trades); each part's code runs there in ErrorBudget.ThePartsAddUpToThePhysicalError.
+// ctest-label ErrorBudgetOrders: physics,releaseonly
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -81,7 +84,7 @@ std::vector<double> settledValues(const TradeAnswer& a) {
 // Step: XPBD's settled drop depends on its step (at 4 cells, second order); the temporal part
 // (against the smallest step) shrinks from 16 ms to 8 ms as the three smallest steps' order
 // predicts, within 10 % (measured: 4.38 against 4.42).
-TEST(ErrorBudget, TheTemporalPartShrinksAtTheObservedOrder) {
+TEST(ErrorBudgetOrders, TheTemporalPartShrinksAtTheObservedOrder) {
   const std::vector<double> dts{0.016, 0.008, 0.004, 0.002};
   const TradeAnswer a = tradeOver(kStrip, {{4}, {"mysim"}, {"xpbd:substeps=4:iterations=10:tolerance=0"}, dts},
                                   "budget_time");
@@ -96,7 +99,7 @@ TEST(ErrorBudget, TheTemporalPartShrinksAtTheObservedOrder) {
 // Solver: XPBD's substeps at one step (the solver axis of the budget); the solver part (against
 // the most substeps) shrinks from 2 to 4 substeps as the three most converged predict, within
 // 10 % (measured: 3.95 against 3.98).
-TEST(ErrorBudget, TheSolverPartShrinksAtTheObservedOrder) {
+TEST(ErrorBudgetOrders, TheSolverPartShrinksAtTheObservedOrder) {
   const std::vector<int> substeps{2, 4, 8, 16, 32};
   std::vector<std::string> variants;
   // The fixed-work form (tolerance 0): its error is the substeps' alone.

@@ -8,7 +8,8 @@
 # "releaseonly" (quick in Release, ten times slower under the sanitizers: the large-step cloth's
 # 12 s runs and the other cantilever's, the trade answer on two unseen cantilevers, the hinge
 # strip settled in every family, the contact landings at 1/60 s, the cloth resting on the sphere
-# in backward Euler, the ablations of the cantilever; their code runs there in shorter tests,
+# in backward Euler, the ablations of the cantilever, XPBD's warm start, the oscillator's orders,
+# the hanging drape specimen, the error budget's orders; their code runs there in shorter tests,
 # each file saying which), which the Release pass has run.
 #
 # The sanitizer build runs beside the Release tests at the lowest priority (nice 19): the Release
